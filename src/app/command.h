@@ -1,0 +1,23 @@
+// Each subcommand of `lensrt` lives in its own file: it registers its options
+// on the main CLI11 app and returns the action to run when it is chosen.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+
+namespace lensrt {
+
+struct CommandContext {
+  std::string commandLine;  // the whole invocation, recorded in output metadata
+};
+
+// Returns the process exit status. Bad input is reported by throwing
+// InputError; main() prints it as one line and exits 1.
+using CommandAction = std::function<int()>;
+
+CommandAction addRenderCommand(CLI::App& app, const CommandContext& context);
+CommandAction addLensCommand(CLI::App& app, const CommandContext& context);
+CommandAction addDiffCommand(CLI::App& app, const CommandContext& context);
+
+}  // namespace lensrt

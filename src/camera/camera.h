@@ -1,0 +1,70 @@
+// One interface for the four camera models (pinhole, thin, thick, full lens).
+// Samples come from outside (keyed by seed, pixel and sample index), so every
+// model is deterministic and knows nothing about threads or tiles.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/ray.h"
+#include "core/transform.h"
+#include "core/vec.h"
+
+namespace lensrt {
+
+// Conventions (documented in the README):
+//  - Raster space: pixel (0,0) is the top-left corner, x right, y down, in pixels.
+//  - Camera space: glTF's, right-handed, looking down -Z with +Y up, metres. The
+//    origin is the lens's entrance pupil (centre of perspective).
+//  - Sensor: physical width x height in millimetres, mapped onto the full raster.
+struct FilmGeometry {
+  int width = 640;            // pixels
+  int height = 360;           // pixels
+  double sensorWidthMm = 36;  // physical film size
+  double sensorHeightMm = 24;
+};
+
+struct CameraSample {
+  Vec2f film;                  // raster position in pixels, continuous
+  Vec2f lens;                  // uniform in [0,1)^2: aperture / exit-pupil sample
+  float wavelengthNm = 550.f;  // carried for dispersion (Abbe numbers); 550 nm = n_d-ish
+};
+
+struct CameraRay {
+  Ray ray;              // world space, unit direction
+  float weight = 1.0f;  // multiplies the radiance: irradiance estimate scaled by exposure
+};
+
+class Camera {
+ public:
+  Camera(const Transform& worldFromCamera, const FilmGeometry& film)
+      : worldFromCamera_(worldFromCamera), film_(film) {}
+  virtual ~Camera() = default;
+  Camera(const Camera&) = delete;
+  Camera& operator=(const Camera&) = delete;
+
+  // Empty when the optics block the ray (vignetting): the sample contributes zero.
+  std::optional<CameraRay> generateRay(const CameraSample& sample) const {
+    std::optional<CameraRay> r = generateCameraSpaceRay(sample);
+    if (!r) return std::nullopt;
+    r->ray = worldFromCamera_(r->ray);
+    r->ray.direction = normalize(r->ray.direction);
+    return r;
+  }
+
+  // Model name and parameters for EXR metadata and reports, e.g. "pinhole yfov=39.6deg".
+  virtual std::string describe() const = 0;
+
+  const Transform& worldFromCamera() const { return worldFromCamera_; }
+  const FilmGeometry& film() const { return film_; }
+
+ protected:
+  // Ray in camera space (origin in metres, any direction length).
+  virtual std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const = 0;
+
+ private:
+  Transform worldFromCamera_;
+  FilmGeometry film_;
+};
+
+}  // namespace lensrt

@@ -1,0 +1,50 @@
+// The render-time scene: owns the Embree device and BVH built from a SceneDesc
+// and answers ray queries. Thread-safe for concurrent queries after construction.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "core/ray.h"
+#include "core/vec.h"
+#include "scene/scene_desc.h"
+
+namespace lensrt {
+
+// Geometry at a ray hit, in world space. Material evaluation (textures, normal
+// maps, BSDF) is the renderer's job; this is only what the geometry says.
+struct SurfaceHit {
+  float t = 0;
+  Vec3f position;
+  Vec3f geometricNormal;  // unit, from the triangle's winding (after the instance transform)
+  Vec3f shadingNormal;    // unit, interpolated vertex normal (or geometric), same hemisphere as
+                          // geometricNormal
+  Vec4f tangent{0, 0, 0, 0};  // world xyz unit + handedness w; zero when the mesh has none
+  Vec2f uv;                   // TEXCOORD_0, zero when absent
+  int material = -1;          // index into SceneDesc::materials, -1: default material
+  int instance = -1;          // index into SceneDesc::instances
+  unsigned primitive = 0;     // triangle index within the instance's mesh
+};
+
+class RenderScene {
+ public:
+  // Throws InputError(desc.sourceFile, ...) for geometry Embree cannot take.
+  explicit RenderScene(SceneDesc desc);
+  ~RenderScene();
+  RenderScene(const RenderScene&) = delete;
+  RenderScene& operator=(const RenderScene&) = delete;
+
+  // Closest hit in (ray.tMin, ray.tMax); alpha-masked texels are skipped.
+  std::optional<SurfaceHit> intersect(const Ray& ray) const;
+  // True when anything blocks the segment (ray.tMin, ray.tMax).
+  bool occluded(const Ray& ray) const;
+
+  const SceneDesc& desc() const;
+  Bounds3f bounds() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lensrt

@@ -1,0 +1,109 @@
+// The neutral scene description: what a loader (glTF today) produces and what
+// the render-time scene (Embree) consumes. Plain data, world units are metres.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/bounds.h"
+#include "core/transform.h"
+#include "core/vec.h"
+
+namespace lensrt {
+
+// Texels are linear floats, RGBA; colour textures are already decoded from sRGB.
+struct Texture {
+  std::string name;
+  int width = 0;
+  int height = 0;
+  std::vector<Vec4f> texels;  // row-major, row 0 is the top of the image (glTF uv (0,0))
+  bool wrapRepeatS = true;    // false: clamp to edge
+  bool wrapRepeatT = true;
+  bool nearest = false;       // glTF magFilter NEAREST; otherwise bilinear
+};
+
+struct TextureRef {
+  int texture = -1;  // index into SceneDesc::textures, -1: none
+  int texCoord = 0;  // which UV set (only 0 is loaded; others warn)
+  bool valid() const { return texture >= 0; }
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// glTF metallic-roughness material.
+struct Material {
+  std::string name;
+  Vec4f baseColor{1, 1, 1, 1};  // linear RGBA factor
+  TextureRef baseColorTexture;
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  TextureRef metallicRoughnessTexture;  // G = roughness, B = metallic
+  TextureRef normalTexture;
+  float normalScale = 1.0f;
+  Vec3f emissive{0, 0, 0};  // linear RGB factor, already times emissiveStrength
+  TextureRef emissiveTexture;
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+  bool doubleSided = false;
+  bool isEmissive() const { return emissive.x > 0 || emissive.y > 0 || emissive.z > 0; }
+};
+
+// One glTF primitive, already converted to an indexed triangle list.
+struct Mesh {
+  std::string name;
+  std::vector<Vec3f> positions;
+  std::vector<Vec3f> normals;   // empty or one per position
+  std::vector<Vec4f> tangents;  // empty or one per position (w = handedness)
+  std::vector<Vec2f> uvs;       // empty or one per position (TEXCOORD_0)
+  std::vector<std::uint32_t> indices;  // 3 per triangle
+  int material = -1;                   // -1: the glTF default material
+  std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// A placement of a mesh in the world. Meshes used more than once (or through
+// EXT_mesh_gpu_instancing) become Embree instances of one shared geometry.
+struct MeshInstance {
+  int mesh = 0;
+  Transform worldFromObject;
+};
+
+// Radiometric punctual lights (converted from glTF's photometric units by the
+// loader; the rule is in the README): intensity in W/sr for point and spot,
+// irradiance in W/m^2 for directional, per RGB channel.
+struct PunctualLight {
+  enum class Type { Point, Spot, Directional };
+  std::string name;
+  Type type = Type::Point;
+  Rgb intensity{1, 1, 1};
+  Vec3f position;             // world, point and spot
+  Vec3f direction{0, 0, -1};  // world, unit, the direction light travels (spot, directional)
+  float innerConeAngle = 0.0f;
+  float outerConeAngle = 0.7853981634f;
+  float range = 0.0f;  // 0: infinite
+};
+
+struct CameraDesc {
+  std::string name;
+  int node = -1;
+  Transform worldFromCamera;  // looks down -Z, +Y up
+  bool orthographic = false;
+  float yfov = 0.6911f;               // radians (perspective)
+  std::optional<float> aspectRatio;   // width / height if the file gives one
+  float znear = 0.01f;
+};
+
+struct SceneDesc {
+  std::string sourceFile;
+  std::vector<Mesh> meshes;
+  std::vector<MeshInstance> instances;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<PunctualLight> lights;
+  std::vector<CameraDesc> cameras;  // in the order the default scene's traversal finds them
+
+  Bounds3f worldBounds() const;
+};
+
+}  // namespace lensrt
