@@ -11,14 +11,19 @@
 
 namespace lensrt {
 
+// Alpha: materials with AlphaMode::Mask are cut out where baseColor alpha
+// (factor * texture) < alphaCutoff. AlphaMode::Blend is treated as Mask with a
+// cutoff of 0.5 (the loader warns once), since the path tracer has no ordered
+// transparency.
+
 // Geometry at a ray hit, in world space. Material evaluation (textures, normal
 // maps, BSDF) is the renderer's job; this is only what the geometry says.
 struct SurfaceHit {
   float t = 0;
   Vec3f position;
-  Vec3f geometricNormal;  // unit, from the triangle's winding (after the instance transform)
-  Vec3f shadingNormal;    // unit, interpolated vertex normal (or geometric), same hemisphere as
-                          // geometricNormal
+  Vec3f geometricNormal;      // unit, from the triangle's winding (after the instance transform)
+  Vec3f shadingNormal;        // unit, interpolated vertex normal (or geometric), same hemisphere as
+                              // geometricNormal
   Vec4f tangent{0, 0, 0, 0};  // world xyz unit + handedness w; zero when the mesh has none
   Vec2f uv;                   // TEXCOORD_0, zero when absent
   int material = -1;          // index into SceneDesc::materials, -1: default material
@@ -41,6 +46,16 @@ class RenderScene {
 
   const SceneDesc& desc() const;
   Bounds3f bounds() const;
+
+  // How the instances were mapped onto Embree: meshes placed once are baked into
+  // world space; meshes placed several times are one shared scene plus one
+  // Embree instance per placement.
+  struct Stats {
+    int bakedGeometries = 0;
+    int sharedMeshes = 0;
+    int embreeInstances = 0;
+  };
+  Stats stats() const;
 
  private:
   struct Impl;

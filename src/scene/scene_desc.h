@@ -21,7 +21,9 @@ struct Texture {
   std::vector<Vec4f> texels;  // row-major, row 0 is the top of the image (glTF uv (0,0))
   bool wrapRepeatS = true;    // false: clamp to edge
   bool wrapRepeatT = true;
-  bool nearest = false;       // glTF magFilter NEAREST; otherwise bilinear
+  bool nearest = false;  // glTF magFilter NEAREST; otherwise bilinear
+  bool mirrorS = false;  // glTF MIRRORED_REPEAT (only meaningful with wrapRepeatS)
+  bool mirrorT = false;
 };
 
 struct TextureRef {
@@ -54,9 +56,9 @@ struct Material {
 struct Mesh {
   std::string name;
   std::vector<Vec3f> positions;
-  std::vector<Vec3f> normals;   // empty or one per position
-  std::vector<Vec4f> tangents;  // empty or one per position (w = handedness)
-  std::vector<Vec2f> uvs;       // empty or one per position (TEXCOORD_0)
+  std::vector<Vec3f> normals;          // empty or one per position
+  std::vector<Vec4f> tangents;         // empty or one per position (w = handedness)
+  std::vector<Vec2f> uvs;              // empty or one per position (TEXCOORD_0)
   std::vector<std::uint32_t> indices;  // 3 per triangle
   int material = -1;                   // -1: the glTF default material
   std::size_t triangleCount() const { return indices.size() / 3; }
@@ -89,8 +91,8 @@ struct CameraDesc {
   int node = -1;
   Transform worldFromCamera;  // looks down -Z, +Y up
   bool orthographic = false;
-  float yfov = 0.6911f;               // radians (perspective)
-  std::optional<float> aspectRatio;   // width / height if the file gives one
+  float yfov = 0.6911f;              // radians (perspective)
+  std::optional<float> aspectRatio;  // width / height if the file gives one
   float znear = 0.01f;
 };
 

@@ -1,0 +1,340 @@
+#include "scene/render_scene.h"
+
+#include <cmath>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "scene/embree_handles.h"
+#include "scene/texture_sampling.h"
+
+namespace lensrt {
+namespace {
+
+// Embree reports errors through a callback; C code cannot carry exceptions, so
+// the callback keeps the message and `check` throws it after the failed call.
+struct ErrorSlot {
+  std::mutex mutex;
+  std::string message;
+};
+
+void recordError(void* user, RTCError code, const char* str) {
+  auto* slot = static_cast<ErrorSlot*>(user);
+  const std::scoped_lock lock(slot->mutex);
+  if (slot->message.empty()) slot->message = str ? str : "error code " + std::to_string(code);
+}
+
+// Everything the alpha filter needs, reachable from Embree's geometry user pointer.
+struct AlphaMask {
+  const Mesh* mesh = nullptr;
+  Vec4f baseColor;
+  const Texture* texture = nullptr;
+  float cutoff = 0.5f;
+
+  bool opaqueAt(unsigned prim, float u, float v) const {
+    float alpha = baseColor.w;
+    if (texture && !mesh->uvs.empty()) {
+      const std::uint32_t* idx = &mesh->indices[3 * static_cast<std::size_t>(prim)];
+      const Vec2f uv = mesh->uvs[idx[0]] * (1 - u - v) + mesh->uvs[idx[1]] * u + mesh->uvs[idx[2]] * v;
+      alpha *= sampleTexture(*texture, uv).w;
+    } else if (texture) {
+      alpha *= sampleTexture(*texture, Vec2f{0, 0}).w;
+    }
+    return alpha >= cutoff;
+  }
+};
+
+// Shared by intersection and occlusion: rejecting a candidate makes Embree go on.
+void alphaFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* mask = static_cast<const AlphaMask*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+    if (!mask->opaqueAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
+      args->valid[i] = 0;
+  }
+}
+
+// What a top-level Embree geometry ID stands for.
+struct GeometryRecord {
+  int instance = -1;
+  int mesh = -1;
+  bool mirrored = false;
+};
+
+}  // namespace
+
+struct RenderScene::Impl {
+  SceneDesc desc;
+  ErrorSlot errors;
+  EmbreeDevice device;
+  std::vector<EmbreeScene> sharedScenes;  // by mesh index, only for shared meshes
+  EmbreeScene top;
+  std::vector<AlphaMask> masks;  // by mesh index; stable, Embree points into it
+  std::vector<GeometryRecord> records;
+  Stats stats;
+
+  void check(const char* what) {
+    if (rtcGetDeviceError(device.get()) == RTC_ERROR_NONE) return;
+    const std::scoped_lock lock(errors.mutex);
+    throw InputError(desc.sourceFile, std::string("Embree failed to ") + what + ": " + errors.message);
+  }
+
+  void validate() const;
+  void buildMasks();
+  EmbreeGeometry newTriangles(int meshIndex, const Transform* bake);
+  void build();
+  SurfaceHit hitAt(const GeometryRecord& rec, unsigned prim, float u, float v, float t,
+                   const Vec3f& dir) const;
+};
+
+void RenderScene::Impl::validate() const {
+  for (const Mesh& m : desc.meshes) {
+    const std::string label = "mesh '" + m.name + "': ";
+    if (m.indices.size() % 3 != 0)
+      throw InputError(desc.sourceFile, label + "index count is not a multiple of 3");
+    for (const std::uint32_t i : m.indices)
+      if (i >= m.positions.size())
+        throw InputError(desc.sourceFile, label + "index " + std::to_string(i) + " beyond vertex count " +
+                                              std::to_string(m.positions.size()));
+    for (const Vec3f& p : m.positions)
+      if (!isFinite(p)) throw InputError(desc.sourceFile, label + "non-finite vertex position");
+    if (!m.normals.empty() && m.normals.size() != m.positions.size())
+      throw InputError(desc.sourceFile, label + "normal count differs from position count");
+    if (!m.tangents.empty() && m.tangents.size() != m.positions.size())
+      throw InputError(desc.sourceFile, label + "tangent count differs from position count");
+    if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
+      throw InputError(desc.sourceFile, label + "uv count differs from position count");
+    if (m.material < -1 || m.material >= static_cast<int>(desc.materials.size()))
+      throw InputError(desc.sourceFile, label + "material index out of range");
+  }
+  for (const Material& mat : desc.materials)
+    for (const TextureRef* ref :
+         {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture, &mat.emissiveTexture})
+      if (ref->texture >= static_cast<int>(desc.textures.size()))
+        throw InputError(desc.sourceFile, "material '" + mat.name + "': texture index out of range");
+  for (const MeshInstance& inst : desc.instances)
+    if (inst.mesh < 0 || inst.mesh >= static_cast<int>(desc.meshes.size()))
+      throw InputError(desc.sourceFile, "instance of mesh " + std::to_string(inst.mesh) + " out of range");
+}
+
+void RenderScene::Impl::buildMasks() {
+  masks.resize(desc.meshes.size());
+  for (std::size_t i = 0; i < desc.meshes.size(); ++i) {
+    const Mesh& m = desc.meshes[i];
+    if (m.material < 0) continue;
+    const Material& mat = desc.materials[m.material];
+    if (mat.alphaMode == AlphaMode::Opaque) continue;
+    AlphaMask& mask = masks[i];
+    mask.mesh = &m;
+    mask.baseColor = mat.baseColor;
+    mask.texture = mat.baseColorTexture.valid() ? &desc.textures[mat.baseColorTexture.texture] : nullptr;
+    mask.cutoff = mat.alphaMode == AlphaMode::Blend ? 0.5f : mat.alphaCutoff;
+  }
+}
+
+EmbreeGeometry RenderScene::Impl::newTriangles(int meshIndex, const Transform* bake) {
+  const Mesh& m = desc.meshes[meshIndex];
+  EmbreeGeometry geom(rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE));
+  check("create a triangle geometry");
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.positions.size()));
+  check("allocate a vertex buffer");
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    const Vec3f p = bake ? bake->point(m.positions[i]) : m.positions[i];
+    vertices[3 * i] = p.x;
+    vertices[3 * i + 1] = p.y;
+    vertices[3 * i + 2] = p.z;
+  }
+  auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+      geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), m.triangleCount()));
+  check("allocate an index buffer");
+  std::copy(m.indices.begin(), m.indices.end(), indices);
+  rtcSetGeometryBuildQuality(geom.get(), RTC_BUILD_QUALITY_HIGH);
+  if (masks[meshIndex].mesh) {
+    rtcSetGeometryUserData(geom.get(), &masks[meshIndex]);
+    rtcSetGeometryIntersectFilterFunction(geom.get(), alphaFilter);
+    rtcSetGeometryOccludedFilterFunction(geom.get(), alphaFilter);
+  }
+  rtcCommitGeometry(geom.get());
+  check("commit a triangle geometry");
+  return geom;
+}
+
+void RenderScene::Impl::build() {
+  validate();
+  buildMasks();
+  device.reset(rtcNewDevice(nullptr));
+  if (!device) throw InputError(desc.sourceFile, "cannot create the Embree device");
+  rtcSetDeviceErrorFunction(device.get(), recordError, &errors);
+
+  const auto newScene = [&] {
+    EmbreeScene s(rtcNewScene(device.get()));
+    check("create a scene");
+    // Robust traversal: no missed hits on shared edges, the renderer relies on watertightness.
+    rtcSetSceneFlags(s.get(), RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(s.get(), RTC_BUILD_QUALITY_HIGH);
+    return s;
+  };
+
+  std::vector<int> uses(desc.meshes.size(), 0);
+  for (const MeshInstance& inst : desc.instances)
+    if (desc.meshes[inst.mesh].triangleCount() > 0 && inst.worldFromObject.determinant3x3() != 0.0)
+      ++uses[inst.mesh];
+
+  sharedScenes.resize(desc.meshes.size());
+  for (std::size_t i = 0; i < desc.meshes.size(); ++i) {
+    if (uses[i] < 2) continue;
+    sharedScenes[i] = newScene();
+    EmbreeGeometry geom = newTriangles(static_cast<int>(i), nullptr);
+    rtcAttachGeometryByID(sharedScenes[i].get(), geom.get(), 0);
+    check("attach a shared mesh");
+    rtcCommitScene(sharedScenes[i].get());
+    check("build a shared mesh");
+    ++stats.sharedMeshes;
+  }
+
+  top = newScene();
+  for (std::size_t i = 0; i < desc.instances.size(); ++i) {
+    const MeshInstance& inst = desc.instances[i];
+    // Zero-scale placements have no area (and no inverse for normals): nothing to hit.
+    if (uses[inst.mesh] == 0 || inst.worldFromObject.determinant3x3() == 0.0) continue;
+    EmbreeGeometry geom;
+    if (uses[inst.mesh] == 1) {
+      geom = newTriangles(inst.mesh, &inst.worldFromObject);
+      ++stats.bakedGeometries;
+    } else {
+      geom.reset(rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_INSTANCE));
+      check("create an instance");
+      rtcSetGeometryInstancedScene(geom.get(), sharedScenes[inst.mesh].get());
+      float xfm[12];
+      const Transform::Matrix& m = inst.worldFromObject.matrix();
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = static_cast<float>(m[r][c]);
+      rtcSetGeometryTransform(geom.get(), 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+      rtcCommitGeometry(geom.get());
+      check("commit an instance");
+      ++stats.embreeInstances;
+    }
+    const auto id = static_cast<unsigned>(records.size());
+    rtcAttachGeometryByID(top.get(), geom.get(), id);
+    check("attach a geometry");
+    records.push_back({static_cast<int>(i), inst.mesh, inst.worldFromObject.determinant3x3() < 0.0});
+  }
+  rtcCommitScene(top.get());
+  check("build the scene");
+}
+
+SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, float u, float v, float t,
+                                    const Vec3f& dir) const {
+  const Mesh& m = desc.meshes[rec.mesh];
+  const Transform& xf = desc.instances[rec.instance].worldFromObject;
+  const std::uint32_t* idx = &m.indices[3 * static_cast<std::size_t>(prim)];
+  const float w = 1 - u - v;
+  const auto interp3 = [&](const std::vector<Vec3f>& a) {
+    return a[idx[0]] * w + a[idx[1]] * u + a[idx[2]] * v;
+  };
+
+  SurfaceHit hit;
+  hit.t = t;
+  hit.primitive = prim;
+  hit.instance = rec.instance;
+  hit.material = m.material;
+  const Vec3f p0 = xf.point(m.positions[idx[0]]);
+  const Vec3f p1 = xf.point(m.positions[idx[1]]);
+  const Vec3f p2 = xf.point(m.positions[idx[2]]);
+  hit.position = p0 * w + p1 * u + p2 * v;
+  // glTF: counter-clockwise is the front unless the world transform mirrors.
+  Vec3f ng = cross(p1 - p0, p2 - p0);
+  if (rec.mirrored) ng = -ng;
+  const float ngLength = length(ng);
+  hit.geometricNormal = ngLength > 0 && std::isfinite(ngLength) ? ng / ngLength : normalize(-dir);
+
+  hit.shadingNormal = hit.geometricNormal;
+  if (!m.normals.empty()) {
+    const Vec3f n = xf.normal(interp3(m.normals));
+    const float len = length(n);
+    if (len > 0 && std::isfinite(len)) hit.shadingNormal = n / len;
+    if (dot(hit.shadingNormal, hit.geometricNormal) < 0) hit.shadingNormal = -hit.shadingNormal;
+  }
+  if (!m.tangents.empty()) {
+    const Vec4f& t0 = m.tangents[idx[0]];
+    const Vec3f tv = xf.vector(t0.xyz() * w + m.tangents[idx[1]].xyz() * u + m.tangents[idx[2]].xyz() * v);
+    const float len = length(tv);
+    if (len > 0 && std::isfinite(len)) {
+      // A mirror flips cross(normal, tangent), so the handedness flips with it.
+      const float handedness = (t0.w < 0 ? -1.0f : 1.0f) * (rec.mirrored ? -1.0f : 1.0f);
+      const Vec3f tn = tv / len;
+      hit.tangent = {tn.x, tn.y, tn.z, handedness};
+    }
+  }
+  if (!m.uvs.empty()) hit.uv = m.uvs[idx[0]] * w + m.uvs[idx[1]] * u + m.uvs[idx[2]] * v;
+  return hit;
+}
+
+RenderScene::RenderScene(SceneDesc desc) : impl_(std::make_unique<Impl>()) {
+  impl_->desc = std::move(desc);
+  impl_->build();
+}
+
+RenderScene::~RenderScene() = default;
+
+std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray.org_x = ray.origin.x;
+  rh.ray.org_y = ray.origin.y;
+  rh.ray.org_z = ray.origin.z;
+  rh.ray.dir_x = ray.direction.x;
+  rh.ray.dir_y = ray.direction.y;
+  rh.ray.dir_z = ray.direction.z;
+  rh.ray.tnear = ray.tMin;
+  rh.ray.tfar = ray.tMax;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->top.get(), &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  // Instanced hits name the top-level instance in instID; baked ones in geomID.
+  const unsigned topId = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
+  return impl_->hitAt(impl_->records[topId], rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.direction);
+}
+
+bool RenderScene::occluded(const Ray& ray) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r{};
+  r.org_x = ray.origin.x;
+  r.org_y = ray.origin.y;
+  r.org_z = ray.origin.z;
+  r.dir_x = ray.direction.x;
+  r.dir_y = ray.direction.y;
+  r.dir_z = ray.direction.z;
+  r.tnear = ray.tMin;
+  r.tfar = ray.tMax;
+  r.mask = 0xFFFFFFFFu;
+  rtcOccluded1(impl_->top.get(), &context, &r);
+  return r.tfar == -kInfinityF;  // Embree marks a blocked ray this way
+}
+
+const SceneDesc& RenderScene::desc() const {
+  return impl_->desc;
+}
+
+Bounds3f RenderScene::bounds() const {
+  RTCBounds b;
+  rtcGetSceneBounds(impl_->top.get(), &b);
+  Bounds3f out;
+  if (impl_->records.empty() || !(b.lower_x <= b.upper_x)) return out;
+  out.lo = {b.lower_x, b.lower_y, b.lower_z};
+  out.hi = {b.upper_x, b.upper_y, b.upper_z};
+  return out;
+}
+
+RenderScene::Stats RenderScene::stats() const {
+  return impl_->stats;
+}
+
+}  // namespace lensrt

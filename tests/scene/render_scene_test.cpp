@@ -1,0 +1,258 @@
+#include "scene/render_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+#include "core/error.h"
+
+namespace lensrt {
+namespace {
+
+// Unit quad in the z = 0 plane, counter-clockwise seen from +Z, uv (0,0) at (-1,-1).
+Mesh quad() {
+  Mesh m;
+  m.name = "quad";
+  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+SceneDesc oneQuad(const Transform& xf = Transform()) {
+  SceneDesc d;
+  d.sourceFile = "test.gltf";
+  d.meshes.push_back(quad());
+  d.instances.push_back({0, xf});
+  return d;
+}
+
+Ray down(float x, float y, float z = 5) {
+  return {{x, y, z}, {0, 0, -1}};
+}
+
+void expectVec(const Vec3f& a, const Vec3f& b, float eps = 1e-5f) {
+  EXPECT_NEAR(a.x, b.x, eps);
+  EXPECT_NEAR(a.y, b.y, eps);
+  EXPECT_NEAR(a.z, b.z, eps);
+}
+
+TEST(RenderScene, HitsQuadWithPositionNormalAndUv) {
+  const RenderScene scene(oneQuad(Transform::translate({0, 0, 1})));
+  const auto hit = scene.intersect(down(0.5f, -0.5f));
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->t, 4.0f, 1e-5f);
+  expectVec(hit->position, {0.5f, -0.5f, 1});
+  expectVec(hit->geometricNormal, {0, 0, 1});
+  expectVec(hit->shadingNormal, {0, 0, 1});
+  EXPECT_NEAR(hit->uv.x, 0.75f, 1e-5f);
+  EXPECT_NEAR(hit->uv.y, 0.25f, 1e-5f);
+  EXPECT_EQ(hit->instance, 0);
+  EXPECT_EQ(hit->material, -1);
+  EXPECT_FALSE(scene.intersect(down(1.5f, 0)));
+  EXPECT_EQ(scene.stats().bakedGeometries, 1);
+  EXPECT_EQ(scene.stats().embreeInstances, 0);
+}
+
+TEST(RenderScene, RespectsRayInterval) {
+  const RenderScene scene(oneQuad());
+  Ray r = down(0, 0);
+  r.tMax = 4.9f;
+  EXPECT_FALSE(scene.intersect(r));
+  EXPECT_FALSE(scene.occluded(r));
+  r.tMax = 5.1f;
+  EXPECT_TRUE(scene.occluded(r));
+  r.tMin = 5.05f;
+  EXPECT_FALSE(scene.occluded(r));
+}
+
+TEST(RenderScene, MirroredTransformKeepsOutwardNormal) {
+  // Mirroring x turns the winding clockwise; glTF says the front face follows
+  // the determinant, so the surface still faces +Z.
+  const RenderScene scene(oneQuad(Transform::scale({-1, 1, 1})));
+  const auto hit = scene.intersect(down(0.25f, 0.5f));
+  ASSERT_TRUE(hit);
+  expectVec(hit->geometricNormal, {0, 0, 1});
+  EXPECT_NEAR(hit->uv.x, 0.375f, 1e-5f);  // x = 0.25 came from object x = -0.25
+}
+
+TEST(RenderScene, RotationTurnsTheNormal) {
+  const double s = std::sqrt(0.5);
+  const RenderScene scene(oneQuad(Transform::rotateQuaternion(0, s, 0, s)));  // +Z -> +X
+  const auto hit = scene.intersect({{5, 0.2f, 0.3f}, {-1, 0, 0}});
+  ASSERT_TRUE(hit);
+  expectVec(hit->geometricNormal, {1, 0, 0});
+  expectVec(hit->position, {0, 0.2f, 0.3f});
+}
+
+TEST(RenderScene, ShadingNormalFlipsIntoGeometricHemisphere) {
+  SceneDesc d = oneQuad();
+  // Vertex normals tilted and pointing below the surface: the hit must report
+  // them flipped to the +Z side.
+  const Vec3f n = normalize(Vec3f{0.6f, 0, -0.8f});
+  d.meshes[0].normals.assign(4, n);
+  const RenderScene scene(std::move(d));
+  const auto hit = scene.intersect(down(0, 0));
+  ASSERT_TRUE(hit);
+  expectVec(hit->shadingNormal, {-0.6f, 0, 0.8f});
+}
+
+TEST(RenderScene, NonUniformScaleTransformsNormalsByInverseTranspose) {
+  SceneDesc d = oneQuad(Transform::scale({1, 4, 1}));
+  d.meshes[0].normals.assign(4, normalize(Vec3f{0, 1, 1}));
+  const RenderScene scene(std::move(d));
+  const auto hit = scene.intersect(down(0, 0));
+  ASSERT_TRUE(hit);
+  // (0,1,1) under the inverse transpose of diag(1,4,1) is (0,1/4,1).
+  expectVec(hit->shadingNormal, normalize(Vec3f{0, 0.25f, 1}));
+}
+
+TEST(RenderScene, TangentFollowsTransformAndMirrorFlipsHandedness) {
+  SceneDesc d = oneQuad(Transform::scale({-1, 1, 1}));
+  d.meshes[0].tangents.assign(4, Vec4f{1, 0, 0, 1});
+  const RenderScene scene(std::move(d));
+  const auto hit = scene.intersect(down(0, 0));
+  ASSERT_TRUE(hit);
+  expectVec(hit->tangent.xyz(), {-1, 0, 0});
+  EXPECT_EQ(hit->tangent.w, -1.0f);
+}
+
+TEST(RenderScene, SharedMeshBecomesEmbreeInstancesHitOnBothCopies) {
+  SceneDesc d;
+  d.meshes.push_back(quad());
+  d.instances.push_back({0, Transform::translate({-5, 0, 0})});
+  d.instances.push_back({0, Transform::translate({5, 0, 0}) * Transform::scale({2, 2, 2})});
+  const RenderScene scene(std::move(d));
+  EXPECT_EQ(scene.stats().sharedMeshes, 1);
+  EXPECT_EQ(scene.stats().embreeInstances, 2);
+  EXPECT_EQ(scene.stats().bakedGeometries, 0);
+  const auto left = scene.intersect(down(-5.5f, 0.5f));
+  ASSERT_TRUE(left);
+  EXPECT_EQ(left->instance, 0);
+  expectVec(left->position, {-5.5f, 0.5f, 0});
+  EXPECT_NEAR(left->uv.x, 0.25f, 1e-5f);
+  const auto right = scene.intersect(down(6.5f, 0));  // only inside because of the scale 2
+  ASSERT_TRUE(right);
+  EXPECT_EQ(right->instance, 1);
+  expectVec(right->position, {6.5f, 0, 0});
+  EXPECT_NEAR(right->uv.x, 0.875f, 1e-5f);
+  expectVec(right->geometricNormal, {0, 0, 1});
+  EXPECT_FALSE(scene.intersect(down(0, 0)));
+  const Bounds3f b = scene.bounds();
+  EXPECT_NEAR(b.lo.x, -6, 1e-4f);
+  EXPECT_NEAR(b.hi.x, 7, 1e-4f);
+}
+
+// Material with a 2x1 nearest texture: left texel transparent, right opaque.
+SceneDesc maskedQuadOverFloor(AlphaMode mode, float cutoff, float leftAlpha) {
+  SceneDesc d = oneQuad(Transform::translate({0, 0, 1}));
+  Texture t;
+  t.width = 2;
+  t.height = 1;
+  t.nearest = true;
+  t.texels = {{1, 1, 1, leftAlpha}, {1, 1, 1, 1}};
+  d.textures.push_back(t);
+  Material m;
+  m.alphaMode = mode;
+  m.alphaCutoff = cutoff;
+  m.baseColorTexture.texture = 0;
+  d.materials.push_back(m);
+  d.meshes[0].material = 0;
+  d.meshes.push_back(quad());  // the floor at z = 0, opaque default material
+  d.instances.push_back({1, Transform()});
+  return d;
+}
+
+TEST(RenderScene, AlphaMaskLetsRaysThroughTransparentTexels) {
+  const RenderScene scene(maskedQuadOverFloor(AlphaMode::Mask, 0.5f, 0.2f));
+  const auto through = scene.intersect(down(-0.5f, 0));
+  ASSERT_TRUE(through);
+  EXPECT_EQ(through->instance, 1);  // the floor under the transparent half
+  EXPECT_NEAR(through->t, 5.0f, 1e-5f);
+  const auto blocked = scene.intersect(down(0.5f, 0));
+  ASSERT_TRUE(blocked);
+  EXPECT_EQ(blocked->instance, 0);
+  EXPECT_EQ(blocked->material, 0);
+  // Shadow rays between the two layers see the same cut-out.
+  Ray shadowLeft = down(-0.5f, 0);
+  shadowLeft.tMax = 4.5f;
+  EXPECT_FALSE(scene.occluded(shadowLeft));
+  Ray shadowRight = down(0.5f, 0);
+  shadowRight.tMax = 4.5f;
+  EXPECT_TRUE(scene.occluded(shadowRight));
+}
+
+TEST(RenderScene, AlphaCutoffComparesAgainstTexelAlpha) {
+  // alpha 0.2 is opaque for a cutoff of 0.1.
+  const RenderScene scene(maskedQuadOverFloor(AlphaMode::Mask, 0.1f, 0.2f));
+  EXPECT_EQ(scene.intersect(down(-0.5f, 0))->instance, 0);
+}
+
+TEST(RenderScene, BlendIsMaskAtOneHalf) {
+  const RenderScene below(maskedQuadOverFloor(AlphaMode::Blend, 0.9f, 0.45f));
+  EXPECT_EQ(below.intersect(down(-0.5f, 0))->instance, 1);
+  const RenderScene above(maskedQuadOverFloor(AlphaMode::Blend, 0.9f, 0.55f));
+  EXPECT_EQ(above.intersect(down(-0.5f, 0))->instance, 0);
+}
+
+TEST(RenderScene, OpaqueModeIgnoresAlpha) {
+  const RenderScene scene(maskedQuadOverFloor(AlphaMode::Opaque, 0.5f, 0.0f));
+  EXPECT_EQ(scene.intersect(down(-0.5f, 0))->instance, 0);
+}
+
+TEST(RenderScene, MaskedInstancesShareTheFilter) {
+  SceneDesc d = maskedQuadOverFloor(AlphaMode::Mask, 0.5f, 0.0f);
+  d.instances.push_back({0, Transform::translate({10, 0, 1})});
+  const RenderScene scene(std::move(d));
+  EXPECT_EQ(scene.stats().embreeInstances, 2);
+  EXPECT_FALSE(scene.intersect(down(9.5f, 0)));  // transparent half, nothing behind
+  const auto hit = scene.intersect(down(10.5f, 0));
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->instance, 2);
+  EXPECT_EQ(scene.intersect(down(-0.5f, 0))->instance, 1);
+}
+
+TEST(RenderScene, ConcurrentQueriesAgree) {
+  const RenderScene scene(maskedQuadOverFloor(AlphaMode::Mask, 0.5f, 0.0f));
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&] {
+      for (int i = 0; i < 2000; ++i) {
+        const float x = -0.99f + 1.98f * static_cast<float>(i) / 2000.0f;
+        const auto hit = scene.intersect(down(x, 0.1f));
+        if (!hit || hit->instance != (x < 0 ? 1 : 0)) ++wrong;
+      }
+    });
+  for (auto& th : threads) th.join();
+  EXPECT_EQ(wrong.load(), 0);
+}
+
+TEST(RenderScene, EmptySceneMissesEverything) {
+  const RenderScene scene(SceneDesc{});
+  EXPECT_FALSE(scene.intersect(down(0, 0)));
+  EXPECT_FALSE(scene.occluded(down(0, 0)));
+  EXPECT_TRUE(scene.bounds().empty());
+}
+
+TEST(RenderScene, RejectsIndexBeyondVertexCount) {
+  SceneDesc d = oneQuad();
+  d.meshes[0].indices[4] = 7;
+  try {
+    const RenderScene scene(std::move(d));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "test.gltf");
+    EXPECT_EQ(e.message(), "mesh 'quad': index 7 beyond vertex count 4");
+  }
+}
+
+TEST(RenderScene, RejectsNonFinitePositions) {
+  SceneDesc d = oneQuad();
+  d.meshes[0].positions[2].y = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(RenderScene{std::move(d)}, InputError);
+}
+
+}  // namespace
+}  // namespace lensrt
