@@ -1,0 +1,44 @@
+// Reading and writing images through OpenImageIO.
+//
+// .exr files hold the image as it is: linear float (or half) channels with
+// the names given (R,G,B,A, depth.Z, variance.R, ...), ZIP compression, and
+// the metadata as string attributes under their keys ("lensrt:spp", ...).
+// .png/.jpg files are an 8-bit preview of R,G,B only: each value is clamped
+// to [0,1] and encoded with the sRGB OETF (see srgb.h); no exposure or tone
+// curve is applied, so keep the EXR for anything quantitative.
+//
+// Writes are atomic: the data goes to a hidden temporary file in the target
+// directory that is renamed over the target only once complete, so a failed
+// write (missing directory, permission, disk full, unknown extension) leaves
+// any existing file untouched and no temporary behind.
+#pragma once
+
+#include <filesystem>
+
+#include "image/image.h"
+
+namespace lensrt {
+
+struct ImageWriteOptions {
+  // EXR only: store 16-bit half floats instead of 32-bit floats. Halves the
+  // file size; values keep ~3 significant digits and saturate at 65504.
+  bool halfFloat = false;
+};
+
+// Throws InputError(file, reason) with a one-line reason on any failure.
+void writeImage(const std::filesystem::path& file, const Image& image, const ImageMetadata& metadata,
+                const ImageWriteOptions& options = {});
+
+// Reads the first subimage of any format OpenImageIO reads, all channels as
+// float with the file's channel names. 8-bit formats give their encoded
+// values scaled to [0,1] (no sRGB decoding). EXR files may list channels in
+// a different order than they were written in: look channels up by name.
+// When `metadata` is given it receives every header attribute as a string.
+// Throws InputError(file, reason) when the file cannot be read.
+Image readImage(const std::filesystem::path& file, ImageMetadata* metadata = nullptr);
+
+// True when writeImage accepts the file's extension: .exr, .png, .jpg, .jpeg
+// (any case). Lets commands reject a bad output name before rendering.
+bool isWritableImageExtension(const std::filesystem::path& file);
+
+}  // namespace lensrt

@@ -1,0 +1,196 @@
+#include "image/image_io.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "image/srgb.h"
+#include "image_test_util.h"
+
+namespace lensrt {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ScratchDir;
+
+// A render-like image: beauty, alpha and AOVs with distinct values per pixel
+// and channel, so a swapped channel or flipped row shows.
+Image renderLikeImage() {
+  Image image(5, 3, {"R", "G", "B", "A", "depth.Z", "normal.X", "variance.R"});
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < int(image.channelCount()); ++c)
+        image.at(x, y, c) = 0.125f * c + 1.5f * x - 3.25f * y;
+  return image;
+}
+
+TEST(ImageIo, ExrRoundTripKeepsChannelsValuesAndMetadata) {
+  const ScratchDir dir;
+  const Image original = renderLikeImage();
+  const ImageMetadata metadata{{"lensrt:spp", "64"}, {"lensrt:camera", "thin lens f/2.8"}};
+  writeImage(dir / "a.exr", original, metadata);
+
+  ImageMetadata readBack;
+  const Image image = readImage(dir / "a.exr", &readBack);
+  ASSERT_EQ(image.width, original.width);
+  ASSERT_EQ(image.height, original.height);
+  ASSERT_EQ(image.channelCount(), original.channelCount());
+  // EXR may reorder channels: match them by name.
+  for (int c = 0; c < int(original.channelCount()); ++c) {
+    const int k = image.channelIndex(original.channels[c]);
+    ASSERT_GE(k, 0) << original.channels[c];
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) EXPECT_EQ(image.at(x, y, k), original.at(x, y, c));
+  }
+  EXPECT_EQ(readBack["lensrt:spp"], "64");
+  EXPECT_EQ(readBack["lensrt:camera"], "thin lens f/2.8");
+  EXPECT_EQ(readBack["compression"], "zip");
+}
+
+TEST(ImageIo, HalfExrRoundsToElevenSignificantBits) {
+  const ScratchDir dir;
+  Image original = test::constantImage(2, 1, {"R", "G", "B"}, 0.0f);
+  original.at(0, 0, 0) = 1.0f + 1.0f / 4096.0f;  // below half's 2^-10 step: rounds to 1
+  original.at(1, 0, 1) = 1000.0f;                // exactly representable
+  writeImage(dir / "h.exr", original, {}, ImageWriteOptions{.halfFloat = true});
+  const Image image = readImage(dir / "h.exr");
+  EXPECT_EQ(image.at(0, 0, image.channelIndex("R")), 1.0f);
+  EXPECT_EQ(image.at(1, 0, image.channelIndex("G")), 1000.0f);
+}
+
+TEST(ImageIo, PngStoresSrgbEncodedEightBitValues) {
+  const ScratchDir dir;
+  const float linear[] = {0.0f, 0.001f, 0.0031308f, 0.18f, 0.5f, 1.0f, 2.0f, -1.0f};
+  Image original(8, 1, {"R", "G", "B", "A"});
+  for (int x = 0; x < 8; ++x) {
+    original.at(x, 0, 0) = linear[x];
+    original.at(x, 0, 1) = linear[7 - x];
+    original.at(x, 0, 2) = 0.5f;
+    original.at(x, 0, 3) = 0.25f;  // alpha is not part of the preview
+  }
+  writeImage(dir / "p.png", original, {});
+  const Image png = readImage(dir / "p.png");
+  ASSERT_EQ(png.channelCount(), 3u);
+  // The closed-form sRGB OETF, written out independently of srgb.h.
+  const auto expectedCode = [](double v) {
+    v = std::fmin(std::fmax(v, 0.0), 1.0);
+    const double e = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+    return std::round(e * 255);
+  };
+  for (int x = 0; x < 8; ++x) {
+    EXPECT_EQ(std::round(png.at(x, 0, 0) * 255), expectedCode(linear[x])) << "x=" << x;
+    EXPECT_EQ(std::round(png.at(x, 0, 1) * 255), expectedCode(linear[7 - x])) << "x=" << x;
+  }
+  // Known codes: 18% grey is 118, half is 188.
+  EXPECT_EQ(std::round(png.at(3, 0, 0) * 255), 118);
+  EXPECT_EQ(std::round(png.at(4, 0, 0) * 255), 188);
+}
+
+TEST(ImageIo, SrgbDecodeInvertsEncode) {
+  for (float v = 0.0f; v <= 1.0f; v += 0.01f) EXPECT_NEAR(srgbDecode(srgbEncode(v)), v, 1e-6f);
+}
+
+TEST(ImageIo, JpegPreviewIsCloseToSrgbValues) {
+  const ScratchDir dir;
+  writeImage(dir / "p.jpg", test::constantImage(16, 16, {"R", "G", "B"}, 0.18f), {});
+  const Image jpg = readImage(dir / "p.jpg");
+  // JPEG is lossy but a flat field survives to within a code or two.
+  EXPECT_NEAR(jpg.at(7, 7, 1) * 255, 118, 2);
+}
+
+void expectUntouchedAndNoStrays(const ScratchDir& dir, const fs::path& target, const std::string& before) {
+  EXPECT_EQ(test::readFileBytes(target), before);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{target.filename().string()});
+}
+
+TEST(ImageIo, UnknownExtensionLeavesExistingFileAlone) {
+  const ScratchDir dir;
+  const fs::path target = dir / "out.tga";
+  std::ofstream(target) << "precious";
+  try {
+    writeImage(target, test::constantImage(2, 2, {"R", "G", "B"}, 1.0f), {});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), target.string());
+    EXPECT_NE(e.message().find("unknown image extension"), std::string::npos) << e.message();
+  }
+  expectUntouchedAndNoStrays(dir, target, "precious");
+}
+
+TEST(ImageIo, MissingDirectoryIsReported) {
+  const ScratchDir dir;
+  try {
+    writeImage(dir / "no/such/dir/out.exr", test::constantImage(2, 2, {"R"}, 1.0f), {});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("directory does not exist"), std::string::npos) << e.message();
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(ImageIo, ReadOnlyDirectoryLeavesExistingFileAlone) {
+  if (::geteuid() == 0) GTEST_SKIP() << "running as root: directory permissions do not apply";
+  const ScratchDir dir;
+  const fs::path target = dir / "out.exr";
+  writeImage(target, test::constantImage(2, 2, {"R"}, 1.0f), {});
+  const std::string before = test::readFileBytes(target);
+  fs::permissions(dir.path(), fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                  fs::perm_options::remove);
+  try {
+    writeImage(target, test::constantImage(2, 2, {"R"}, 7.0f), {});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("permission denied"), std::string::npos) << e.message();
+  }
+  fs::permissions(dir.path(), fs::perms::owner_all, fs::perm_options::add);
+  expectUntouchedAndNoStrays(dir, target, before);
+}
+
+TEST(ImageIo, UncreatableDirectoryIsReportedEvenForRoot) {
+  // /proc refuses new files for every user, root included.
+  if (!fs::is_directory("/proc/self")) GTEST_SKIP() << "no /proc on this system";
+  EXPECT_THROW(writeImage("/proc/lensrt_test_out.exr", test::constantImage(1, 1, {"R"}, 1.0f), {}),
+               InputError);
+}
+
+TEST(ImageIo, InconsistentImageLeavesExistingFileAlone) {
+  const ScratchDir dir;
+  const fs::path target = dir / "out.exr";
+  writeImage(target, test::constantImage(2, 2, {"R"}, 1.0f), {});
+  const std::string before = test::readFileBytes(target);
+  Image broken = test::constantImage(2, 2, {"R"}, 5.0f);
+  broken.pixels.pop_back();
+  EXPECT_THROW(writeImage(target, broken, {}), InputError);
+  expectUntouchedAndNoStrays(dir, target, before);
+}
+
+TEST(ImageIo, OverwriteReplacesTheFile) {
+  const ScratchDir dir;
+  const fs::path target = dir / "out.exr";
+  writeImage(target, test::constantImage(2, 2, {"R"}, 1.0f), {});
+  writeImage(target, test::constantImage(2, 2, {"R"}, 3.0f), {});
+  EXPECT_EQ(readImage(target).at(1, 1, 0), 3.0f);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.exr"});
+}
+
+TEST(ImageIo, UnreadableFilesThrowInputError) {
+  const ScratchDir dir;
+  EXPECT_THROW(readImage(dir / "missing.exr"), InputError);
+  std::ofstream(dir / "garbage.exr") << "not an image";
+  EXPECT_THROW(readImage(dir / "garbage.exr"), InputError);
+  EXPECT_THROW(readImage(dir.path()), InputError);
+}
+
+TEST(ImageIo, WritableExtensions) {
+  EXPECT_TRUE(isWritableImageExtension("a.EXR"));
+  EXPECT_TRUE(isWritableImageExtension("dir/a.jpeg"));
+  EXPECT_FALSE(isWritableImageExtension("a.tiff"));
+  EXPECT_FALSE(isWritableImageExtension("a"));
+}
+
+}  // namespace
+}  // namespace lensrt
