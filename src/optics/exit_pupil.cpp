@@ -1,0 +1,201 @@
+#include "optics/exit_pupil.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include "core/constants.h"
+
+namespace lensrt {
+namespace {
+
+double cross2(const Vec2d& o, const Vec2d& a, const Vec2d& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+// Andrew's monotone chain; counter-clockwise, no collinear points.
+std::vector<Vec2d> convexHull(std::vector<Vec2d> pts) {
+  std::sort(pts.begin(), pts.end(),
+            [](const Vec2d& a, const Vec2d& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (pts.size() < 3) return pts;
+  std::vector<Vec2d> hull(2 * pts.size());
+  std::size_t k = 0;
+  for (const Vec2d& p : pts) {
+    while (k >= 2 && cross2(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross2(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+// Traces for one film radius: the boundary of the passing region on the
+// pupil plane, as points just OUTSIDE it along rays from an interior point.
+class NodeSolver {
+ public:
+  NodeSolver(const LensSystem& lens, double planeZ, double filmZ)
+      : lens_(lens), planeZ_(planeZ), filmZ_(filmZ) {}
+
+  std::vector<Vec2d> boundary(double filmRadius) const {
+    // Half-size of a square on the plane that holds every passing point: the
+    // line from the film point through the rear aperture rim, extended.
+    const Surface& rear = lens_.prescription().surfaces.back();
+    const double a = rear.apertureDiameter / 2.0;
+    double sagRim = 0.0;
+    if (rear.radius != 0.0) {
+      const double R = std::abs(rear.radius);
+      sagRim = std::abs(R - std::sqrt(std::max(0.0, R * R - a * a)));
+    }
+    const double D = filmZ_ - planeZ_;
+    const double dRim = std::max(D - sagRim, 1e-3 * D);
+    const double extent = 1.05 * (filmRadius + (a + filmRadius) * D / dRim) + 1e-3;
+
+    constexpr int kGrid = 32;
+    std::vector<Vec2d> inside;
+    for (int j = 0; j < kGrid; ++j)
+      for (int i = 0; i < kGrid; ++i) {
+        const Vec2d q{-extent + 2 * extent * (i + 0.5) / kGrid, -extent + 2 * extent * (j + 0.5) / kGrid};
+        if (passes(filmRadius, q)) inside.push_back(q);
+      }
+    if (inside.empty()) return {};
+    Vec2d c{0, 0};
+    for (const Vec2d& q : inside) c = c + q;
+    c = c / static_cast<double>(inside.size());
+    if (!passes(filmRadius, c)) {
+      const auto nearest =
+          std::min_element(inside.begin(), inside.end(), [&](const Vec2d& u, const Vec2d& v) {
+            return std::hypot(u.x - c.x, u.y - c.y) < std::hypot(v.x - c.x, v.y - c.y);
+          });
+      c = *nearest;
+    }
+    // March out from c in each direction, keeping the LAST passing step (so a
+    // gap in a non-convex region is not taken for its edge), then bisect.
+    constexpr int kDirections = 72;
+    const double step = extent / 12.0;
+    std::vector<Vec2d> edge;
+    edge.reserve(kDirections);
+    for (int k = 0; k < kDirections; ++k) {
+      const double theta = 2.0 * kPi * k / kDirections;
+      const Vec2d dir{std::cos(theta), std::sin(theta)};
+      const double tMax = 3.0 * extent;
+      double lastIn = 0.0;
+      for (double t = step; t <= tMax; t += step)
+        if (passes(filmRadius, c + dir * t)) lastIn = t;
+      double lo = lastIn, hi = lastIn + step;
+      for (int it = 0; it < 16; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (passes(filmRadius, c + dir * mid) ? lo : hi) = mid;
+      }
+      edge.push_back(c + dir * hi);
+    }
+    return edge;
+  }
+
+ private:
+  bool passes(double filmRadius, const Vec2d& q) const {
+    const LensRay ray{{filmRadius, 0.0, filmZ_}, {q.x - filmRadius, q.y, planeZ_ - filmZ_}};
+    return lens_.traceFromFilm(ray).has_value();
+  }
+  const LensSystem& lens_;
+  double planeZ_, filmZ_;
+};
+
+}  // namespace
+
+ExitPupilBounds::ExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius, int intervals)
+    : planeZ_(lens.rearZ()), filmZ_(filmZ), maxFilmRadius_(maxFilmRadius) {
+  if (!(filmZ > planeZ_))
+    throw std::invalid_argument("ExitPupilBounds: the film must lie behind the rear vertex");
+  if (!(maxFilmRadius > 0.0) || intervals < 1)
+    throw std::invalid_argument("ExitPupilBounds: bad film extent");
+  // Nodes at every interval end and middle; each interval's polygon is the
+  // hull of its three nodes' boundaries, so it also covers radii in between.
+  const int nodes = 2 * intervals + 1;
+  std::vector<std::vector<Vec2d>> boundaries(nodes);
+  const NodeSolver solver(lens, planeZ_, filmZ_);
+  const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        for (int k = static_cast<int>(t); k < nodes; k += static_cast<int>(threads))
+          boundaries[k] = solver.boundary(maxFilmRadius * k / (nodes - 1));
+      });
+  }
+  polygons_.resize(intervals);
+  for (int i = 0; i < intervals; ++i) {
+    std::vector<Vec2d> pts;
+    for (int k = 2 * i; k <= 2 * i + 2; ++k)
+      pts.insert(pts.end(), boundaries[k].begin(), boundaries[k].end());
+    std::vector<Vec2d> hull = convexHull(pts);
+    if (hull.size() < 3) continue;
+    // Dilate about the vertex mean: 1% of the size plus a micrometre, to
+    // cover the edge between boundary samples and sub-node variation.
+    Vec2d g{0, 0};
+    for (const Vec2d& v : hull) g = g + v;
+    g = g / static_cast<double>(hull.size());
+    for (Vec2d& v : hull) {
+      const Vec2d r = v - g;
+      const double len = std::hypot(r.x, r.y);
+      if (len > 0) v = g + r * (1.01 + 1e-3 / len);
+    }
+    Polygon& poly = polygons_[i];
+    poly.vertices = std::move(hull);
+    poly.cdf.push_back(0.0);
+    const auto& v = poly.vertices;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k)
+      poly.cdf.push_back(poly.cdf.back() + 0.5 * cross2(v[0], v[k], v[k + 1]));
+    poly.area = poly.cdf.back();
+  }
+}
+
+int ExitPupilBounds::intervalOf(double filmRadius) const {
+  if (!(filmRadius <= maxFilmRadius_ * (1.0 + 1e-9))) return -1;
+  const int n = static_cast<int>(polygons_.size());
+  return std::clamp(static_cast<int>(filmRadius / maxFilmRadius_ * n), 0, n - 1);
+}
+
+double ExitPupilBounds::area(double filmRadius) const {
+  const int i = intervalOf(filmRadius);
+  return i < 0 ? 0.0 : polygons_[i].area;
+}
+
+std::optional<PupilSample> ExitPupilBounds::sample(Vec2d filmPoint, Vec2d u) const {
+  const double r = std::hypot(filmPoint.x, filmPoint.y);
+  const int i = intervalOf(r);
+  if (i < 0 || polygons_[i].area <= 0.0) return std::nullopt;
+  const Polygon& poly = polygons_[i];
+  // Pick a fan triangle by area, reuse u.x within it, then uniform in the triangle.
+  const double target = u.x * poly.area;
+  const auto it = std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target);
+  const std::size_t k = static_cast<std::size_t>(it - poly.cdf.begin());  // triangle (v0, v[k], v[k+1])
+  const double lo = poly.cdf[k - 1], hi = poly.cdf[k];
+  const double ux = std::clamp((target - lo) / std::max(hi - lo, 1e-300), 0.0, 1.0);
+  const double s = std::sqrt(ux);
+  const double b0 = 1.0 - s, b1 = u.y * s;
+  const Vec2d& A = poly.vertices[0];
+  const Vec2d& B = poly.vertices[k];
+  const Vec2d& C = poly.vertices[k + 1];
+  const Vec2d q = A * b0 + B * b1 + C * (1.0 - b0 - b1);
+  const double cosPhi = r > 0 ? filmPoint.x / r : 1.0, sinPhi = r > 0 ? filmPoint.y / r : 0.0;
+  return PupilSample{{q.x * cosPhi - q.y * sinPhi, q.x * sinPhi + q.y * cosPhi, planeZ_}, 1.0 / poly.area};
+}
+
+double ExitPupilBounds::pdf(Vec2d filmPoint, Vec2d pupilPoint) const {
+  const double r = std::hypot(filmPoint.x, filmPoint.y);
+  const int i = intervalOf(r);
+  if (i < 0 || polygons_[i].area <= 0.0) return 0.0;
+  const double cosPhi = r > 0 ? filmPoint.x / r : 1.0, sinPhi = r > 0 ? filmPoint.y / r : 0.0;
+  const Vec2d q{pupilPoint.x * cosPhi + pupilPoint.y * sinPhi,
+                -pupilPoint.x * sinPhi + pupilPoint.y * cosPhi};
+  const auto& v = polygons_[i].vertices;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    if (cross2(v[k], v[(k + 1) % v.size()], q) < 0.0) return 0.0;
+  return 1.0 / polygons_[i].area;
+}
+
+}  // namespace lensrt

@@ -1,0 +1,58 @@
+// Exit pupil bounds: where on the rear-vertex plane (z = lens.rearZ()) rays
+// from a film point can aim and still pass the whole lens.
+//
+// The lens is rotationally symmetric, so bounds are precomputed for film
+// radii 0..maxFilmRadius in `intervals` steps: for each interval a convex
+// polygon (in the frame where the film point lies on +x) containing every
+// passing point for any film radius in that interval, conservatively dilated.
+// Sampling a film point rotates its interval's polygon to the point's azimuth.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/vec.h"
+#include "optics/lens_system.h"
+
+namespace lensrt {
+
+struct PupilSample {
+  Vec3d point;       // on the plane z = planeZ(), lens space, mm
+  double pdf = 0.0;  // per unit area (1/mm^2) on that plane
+};
+
+class ExitPupilBounds {
+ public:
+  // filmZ: the film plane (lens.rearZ() + film distance). maxFilmRadius: the
+  // largest film radius to support, e.g. half the sensor diagonal.
+  ExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius, int intervals = 64);
+
+  double planeZ() const { return planeZ_; }
+  double filmZ() const { return filmZ_; }
+  double maxFilmRadius() const { return maxFilmRadius_; }
+
+  // A point on the pupil plane for film point (x, y) (lens space) from a
+  // uniform sample u in [0,1)^2, with its pdf per unit area. nullopt when no
+  // ray from that film point can pass (outside the image circle) or the film
+  // point is beyond maxFilmRadius.
+  std::optional<PupilSample> sample(Vec2d filmPoint, Vec2d u) const;
+  // The pdf `sample` would give for that pupil-plane point (0 outside bounds).
+  double pdf(Vec2d filmPoint, Vec2d pupilPoint) const;
+  // Area of the bounds (mm^2) for a film radius; 0 when nothing passes.
+  double area(double filmRadius) const;
+
+ private:
+  struct Polygon {
+    std::vector<Vec2d> vertices;  // counter-clockwise, convex
+    std::vector<double> cdf;      // fan triangles from vertices[0], cumulative area
+    double area = 0.0;
+  };
+  int intervalOf(double filmRadius) const;
+
+  double planeZ_ = 0.0;
+  double filmZ_ = 0.0;
+  double maxFilmRadius_ = 0.0;
+  std::vector<Polygon> polygons_;  // one per interval
+};
+
+}  // namespace lensrt

@@ -1,0 +1,74 @@
+// Exact (real) ray tracing through a lens prescription.
+//
+// Lens space, used by every optics API: millimetres, right-handed, the optical
+// axis is z, +z points from the scene toward the film (the way light travels).
+// The first (front) vertex is at z = 0, surface i at surfaceZ(i), the last
+// (rear) vertex at rearZ(); the film is the plane z = rearZ() + filmDistance.
+// The scene is at negative z. x and y are arbitrary but shared by film and
+// scene: the real image on the film is inverted (a camera flips it).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/vec.h"
+#include "optics/glass.h"
+#include "optics/paraxial.h"
+#include "optics/prescription.h"
+
+namespace lensrt {
+
+struct LensRay {
+  Vec3d origin;
+  Vec3d direction;  // unit length on output; any non-zero length on input
+};
+
+class LensSystem {
+ public:
+  // The prescription is validated (throws InputError).
+  explicit LensSystem(LensPrescription prescription);
+
+  const LensPrescription& prescription() const { return prescription_; }
+  const ParaxialData& paraxial() const { return paraxial_; }
+  int surfaceCount() const { return static_cast<int>(surfaces_.size()); }
+  double surfaceZ(int i) const { return surfaces_[i].z; }
+  double rearZ() const { return surfaces_.back().z; }
+  double rearApertureRadius() const { return surfaces_.back().apertureRadius; }
+  double frontApertureRadius() const { return surfaces_.front().apertureRadius; }
+
+  // A ray leaving a film point toward the scene (direction.z < 0). Returns the
+  // ray leaving the front surface into the scene, or nullopt when an aperture,
+  // the stop, a missed sphere or total internal reflection blocks it. Never
+  // returns non-finite values. `path`, when given, receives every surface hit.
+  std::optional<LensRay> traceFromFilm(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
+                                       std::vector<Vec3d>* path = nullptr) const;
+  // A ray from the scene toward the lens (direction.z > 0); returns the ray
+  // leaving the rear surface toward the film.
+  std::optional<LensRay> traceFromScene(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
+                                        std::vector<Vec3d>* path = nullptr) const;
+
+ private:
+  struct TraceSurface {
+    double z = 0.0;
+    double radius = 0.0;  // 0 = flat
+    double apertureRadius = 0.0;
+    double apertureRadius2 = 0.0;
+    bool isStop = false;
+    double ndAfter = 1.0;  // index after the surface (toward the film) at the d line
+    Dispersion after;
+  };
+  // Intersect surface s; returns the hit point and the unit normal facing the
+  // incoming ray, or false when missed or outside the clear aperture.
+  static bool intersect(const TraceSurface& s, const Vec3d& o, const Vec3d& d, Vec3d& hit, Vec3d& normal);
+  double indexAfter(int i, double wavelengthNm) const;
+
+  LensPrescription prescription_;
+  ParaxialData paraxial_;
+  std::vector<TraceSurface> surfaces_;
+};
+
+// Refract unit direction d at a surface with unit normal n facing against d
+// (dot(n, d) < 0), from index n1 into n2. False on total internal reflection.
+bool refract(const Vec3d& d, const Vec3d& n, double n1, double n2, Vec3d& out);
+
+}  // namespace lensrt

@@ -1,0 +1,53 @@
+// A lens prescription: the ordered spherical surfaces of a lens, from the
+// object (scene) side to the film, in millimetres.
+//
+// Surface i sits at the axial vertex position z_i (z_0 = 0, z_{i+1} = z_i +
+// thickness_i). radius > 0 means the centre of curvature lies on the film side
+// of the vertex (convex toward the scene), 0 means flat. `medium` fills the gap
+// from surface i to surface i + 1 (after the last surface: the space to the
+// film, always air in practice). The last surface's thickness is the nominal
+// film distance of the design (0 when the source does not give it).
+// Exactly one surface is the aperture stop (flat, medium unchanged across it).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "optics/glass.h"
+
+namespace lensrt {
+
+struct Surface {
+  double radius = 0.0;            // mm, signed; 0 = flat
+  double thickness = 0.0;         // mm, vertex to next vertex (or to the film)
+  double apertureDiameter = 0.0;  // mm, clear aperture
+  Medium medium;                  // after this surface
+  bool isStop = false;
+  int line = 0;  // line in the source file, for messages (0 when unknown)
+};
+
+struct LensPrescription {
+  std::string name;                   // library name (file stem), e.g. "dgauss-50mm"
+  std::string description;            // e.g. "Double Gauss F/2, 22 deg HFOV"
+  std::string source;                 // patent or book it was taken from
+  double nominalFocalLengthMm = 0.0;  // 0 when unknown
+  std::string file;                   // where it was read from (for messages)
+  std::vector<Surface> surfaces;
+
+  int stopIndex() const;  // -1 when there is none
+  // Distance from the first to the last vertex (excludes the film distance).
+  double length() const;
+  // The same design scaled uniformly (radii, thicknesses, apertures).
+  LensPrescription scaled(double factor) const;
+};
+
+// Limits that separate a lens from garbage; readers refuse beyond them.
+inline constexpr int kMaxSurfaces = 200;
+inline constexpr double kMaxLengthMm = 10000.0;  // any radius, thickness or aperture
+
+// Throws InputError(file, message, line) when the prescription cannot be a
+// real lens: bad numbers, no or several stops, aperture wider than its sphere,
+// surfaces that cut into each other within their clear apertures.
+void validatePrescription(const LensPrescription& lens);
+
+}  // namespace lensrt
