@@ -1,0 +1,103 @@
+#include "render/environment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/constants.h"
+
+namespace lensrt {
+
+Environment Environment::constant(const Rgb& radiance) {
+  Environment e;
+  e.constant_ = radiance;
+  e.black_ = !(maxComponent(radiance) > 0);
+  e.averageLuminance_ = luminance(radiance);
+  e.description_ = "constant " + std::to_string(radiance.x) + "," + std::to_string(radiance.y) + "," +
+                   std::to_string(radiance.z);
+  return e;
+}
+
+Environment Environment::latLong(const Image& image) {
+  const int r = image.channelIndex("R"), g = image.channelIndex("G"), b = image.channelIndex("B");
+  int grey = r >= 0 ? r : (image.channelIndex("Y") >= 0 ? image.channelIndex("Y") : -1);
+  if (grey < 0 && image.channelCount() > 0) grey = 0;
+  if (grey < 0 || image.width <= 0 || image.height <= 0) throw std::invalid_argument("environment map has no channels");
+  Environment e;
+  e.width_ = image.width;
+  e.height_ = image.height;
+  e.texels_.resize(std::size_t(e.width_) * e.height_);
+  std::vector<float> weights(e.texels_.size());
+  double sumLum = 0, sumSin = 0;
+  for (int y = 0; y < e.height_; ++y) {
+    const float sinTheta = std::sin(kPiF * (float(y) + 0.5f) / float(e.height_));
+    for (int x = 0; x < e.width_; ++x) {
+      Rgb c;
+      if (r >= 0 && g >= 0 && b >= 0)
+        c = {image.at(x, y, r), image.at(x, y, g), image.at(x, y, b)};
+      else
+        c = Rgb{1, 1, 1} * image.at(x, y, grey);
+      // Non-finite or negative texels would poison every estimate: treat as black.
+      for (int k = 0; k < 3; ++k)
+        if (!(std::isfinite(c[k]) && c[k] > 0)) c[k] = 0;
+      const std::size_t i = std::size_t(y) * e.width_ + x;
+      e.texels_[i] = c;
+      weights[i] = luminance(c) * sinTheta;
+      // Rows near the poles cover less solid angle.
+      sumLum += double(luminance(c)) * sinTheta;
+      sumSin += sinTheta;
+    }
+  }
+  e.distribution_ = Distribution2D(weights, e.width_, e.height_);
+  e.black_ = e.distribution_.empty();
+  e.averageLuminance_ = sumSin > 0 ? float(sumLum / sumSin) : 0.0f;
+  e.description_ = "latlong " + std::to_string(e.width_) + "x" + std::to_string(e.height_);
+  return e;
+}
+
+Vec2f Environment::directionToUv(const Vec3f& d) {
+  const float u = 0.5f + std::atan2(d.x, -d.z) / (2 * kPiF);
+  const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPiF;
+  return {u - std::floor(u), std::clamp(v, 0.0f, std::nextafter(1.0f, 0.0f))};
+}
+
+Vec3f Environment::uvToDirection(const Vec2f& uv) {
+  const float theta = kPiF * uv.y, phi = 2 * kPiF * (uv.x - 0.5f);
+  const float s = std::sin(theta);
+  return {s * std::sin(phi), std::cos(theta), -s * std::cos(phi)};
+}
+
+Rgb Environment::eval(const Vec3f& direction) const {
+  if (black_) return {0, 0, 0};
+  if (texels_.empty()) return constant_;
+  const Vec2f uv = directionToUv(direction);
+  const int x = std::min(int(uv.x * float(width_)), width_ - 1);
+  const int y = std::min(int(uv.y * float(height_)), height_ - 1);
+  return texels_[std::size_t(y) * width_ + x];
+}
+
+std::optional<EnvironmentSample> Environment::sample(const Vec2f& u) const {
+  if (black_) return std::nullopt;
+  if (texels_.empty()) {
+    // Uniform sphere: a constant map has nothing better to offer.
+    const float z = 1 - 2 * u.x, r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = 2 * kPiF * u.y;
+    return EnvironmentSample{{r * std::cos(phi), r * std::sin(phi), z}, constant_, 1 / (4 * kPiF)};
+  }
+  const Vec3f d = uvToDirection(distribution_.sample(u, nullptr));
+  // Density and radiance from the direction itself, so that a sample on a texel
+  // edge reports the same texel that eval() and pdf() will see for it.
+  const float density = pdf(d);
+  if (!(density > 0)) return std::nullopt;
+  return EnvironmentSample{d, eval(d), density};
+}
+
+float Environment::pdf(const Vec3f& direction) const {
+  if (black_) return 0;
+  if (texels_.empty()) return 1 / (4 * kPiF);
+  const Vec2f uv = directionToUv(direction);
+  const float sinTheta = std::sin(kPiF * uv.y);
+  if (sinTheta <= 0) return 0;
+  return distribution_.pdf(uv) / (2 * kPiF * kPiF * sinTheta);
+}
+
+}  // namespace lensrt

@@ -1,0 +1,55 @@
+// Light arriving from infinitely far away: black, a constant colour, or a
+// lat-long (equirectangular) map, importance sampled by luminance x sin(theta).
+//
+// Lat-long convention (glTF's +Y up): image column u in [0,1) is the azimuth,
+// row v in [0,1) the polar angle from +Y (row 0 = straight up). The image
+// centre (u, v) = (0.5, 0.5) looks down -Z, glTF's default forward; u grows
+// toward +X (so u = 0.75 is +X). The map is piecewise constant per texel.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec.h"
+#include "image/image.h"
+#include "render/distribution.h"
+
+namespace lensrt {
+
+struct EnvironmentSample {
+  Vec3f direction;  // world, unit, toward the environment
+  Rgb radiance;
+  float pdf;  // solid angle
+};
+
+class Environment {
+ public:
+  Environment() = default;  // black
+  static Environment constant(const Rgb& radiance);
+  // Uses the R, G, B channels (a single-channel map is grey). Throws
+  // std::invalid_argument when the image has no usable channels.
+  static Environment latLong(const Image& image);
+
+  bool isBlack() const { return black_; }
+  Rgb eval(const Vec3f& direction) const;
+  std::optional<EnvironmentSample> sample(const Vec2f& u) const;
+  float pdf(const Vec3f& direction) const;
+  // Mean radiance luminance over the sphere: for light selection by power.
+  float averageLuminance() const { return averageLuminance_; }
+  std::string describe() const { return description_; }
+
+  static Vec2f directionToUv(const Vec3f& d);
+  static Vec3f uvToDirection(const Vec2f& uv);
+
+ private:
+  bool black_ = true;
+  Rgb constant_{0, 0, 0};
+  int width_ = 0, height_ = 0;
+  std::vector<Rgb> texels_;
+  Distribution2D distribution_;
+  float averageLuminance_ = 0;
+  std::string description_ = "black";
+};
+
+}  // namespace lensrt

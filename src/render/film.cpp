@@ -1,0 +1,62 @@
+#include "render/film.h"
+
+#include <cmath>
+
+namespace lensrt {
+
+std::vector<std::string> filmChannels(const AovSelection& aovs) {
+  std::vector<std::string> c{"R", "G", "B", "A"};
+  if (aovs.depth) c.push_back("depth.Z");
+  if (aovs.normal) c.insert(c.end(), {"normal.X", "normal.Y", "normal.Z"});
+  if (aovs.albedo) c.insert(c.end(), {"albedo.R", "albedo.G", "albedo.B"});
+  if (aovs.variance) c.insert(c.end(), {"variance.R", "variance.G", "variance.B"});
+  return c;
+}
+
+void PixelAccumulator::add(const PathSample& s, float weight) {
+  const Rgb l = s.radiance * weight;
+  if (!isFinite(l)) {
+    ++dropped_;
+    return;
+  }
+  ++count_;
+  for (int k = 0; k < 3; ++k) {
+    sum_[k] += l[k];
+    sumSq_[k] += double(l[k]) * l[k];
+  }
+  if (s.hit) {
+    ++hits_;
+    distance_ += s.distance;
+    if (isFinite(s.normal)) normal_ += s.normal;
+    for (int k = 0; k < 3; ++k) albedo_[k] += s.albedo[k];
+  }
+}
+
+void PixelAccumulator::addBlocked() { ++count_; }
+
+void PixelAccumulator::write(const AovSelection& aovs, float* out) const {
+  const double n = double(count_);
+  double mean[3] = {0, 0, 0};
+  for (int k = 0; k < 3; ++k) mean[k] = n > 0 ? sum_[k] / n : 0.0;
+  int c = 0;
+  for (int k = 0; k < 3; ++k) out[c++] = float(mean[k]);
+  out[c++] = n > 0 ? float(double(hits_) / n) : 0.0f;
+  if (aovs.depth) out[c++] = hits_ > 0 ? float(distance_ / double(hits_)) : 0.0f;
+  if (aovs.normal) {
+    const float len = length(normal_);
+    const Vec3f nn = len > 0 ? normal_ / len : Vec3f{0, 0, 0};
+    out[c++] = nn.x;
+    out[c++] = nn.y;
+    out[c++] = nn.z;
+  }
+  if (aovs.albedo)
+    for (int k = 0; k < 3; ++k) out[c++] = n > 0 ? float(albedo_[k] / n) : 0.0f;
+  if (aovs.variance)
+    for (int k = 0; k < 3; ++k) {
+      // Unbiased sample variance over n, clamped against cancellation.
+      const double v = n > 1 ? std::max(0.0, (sumSq_[k] - n * mean[k] * mean[k]) / (n - 1)) / n : 0.0;
+      out[c++] = float(v);
+    }
+}
+
+}  // namespace lensrt

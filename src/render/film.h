@@ -1,0 +1,58 @@
+// Per-pixel accumulation and the output channel layout.
+//
+// Reconstruction is a box filter: each pixel is the plain mean of the samples
+// whose film positions fall inside it. Samples are added in sample order, so
+// the floating-point sums (and the image) are identical for any thread count.
+//
+// Channels: R,G,B (mean radiance times the camera weight), A (fraction of
+// camera samples whose ray hit geometry), then the AOVs asked for:
+//  - depth.Z: mean camera-ray hit distance in metres over the samples that hit;
+//    0 where no sample hit (background).
+//  - normal.X/Y/Z: mean world shading normal at the first hit, facing the
+//    camera, renormalised; 0 where no sample hit.
+//  - albedo.R/G/B: mean first-hit base colour over all samples (a miss adds 0).
+//  - variance.R/G/B: variance of the pixel's mean estimate, i.e. the unbiased
+//    sample variance divided by the sample count; 0 with a single sample.
+// A sample with a NaN or infinite radiance is dropped (not part of any mean)
+// and counted.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/vec.h"
+#include "render/integrator.h"
+
+namespace lensrt {
+
+struct AovSelection {
+  bool depth = false;
+  bool normal = false;
+  bool albedo = false;
+  bool variance = false;
+};
+
+std::vector<std::string> filmChannels(const AovSelection& aovs);
+
+class PixelAccumulator {
+ public:
+  // `weight` is the camera ray's weight; a blocked camera ray adds a zero sample.
+  void add(const PathSample& s, float weight);
+  void addBlocked();
+  std::uint64_t droppedSamples() const { return dropped_; }
+  // Writes this pixel's channels (layout of filmChannels) to `out`.
+  void write(const AovSelection& aovs, float* out) const;
+
+ private:
+  double sum_[3] = {0, 0, 0};
+  double sumSq_[3] = {0, 0, 0};
+  std::uint64_t count_ = 0;
+  std::uint64_t hits_ = 0;
+  std::uint64_t dropped_ = 0;
+  double distance_ = 0;
+  Vec3f normal_{0, 0, 0};
+  double albedo_[3] = {0, 0, 0};
+};
+
+}  // namespace lensrt

@@ -1,0 +1,108 @@
+#include "render/integrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/bsdf.h"
+
+namespace lensrt {
+namespace {
+
+// Offset along the geometric normal, scaled to the coordinates' magnitude so
+// that the next ray does not re-hit its own surface through rounding.
+Vec3f offsetOrigin(const Vec3f& p, const Vec3f& n) {
+  const float scale = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return p + n * (2e-4f * scale);
+}
+
+}  // namespace
+
+float powerHeuristic(float pdfA, float pdfB) {
+  if (std::isinf(pdfA)) return 1.0f;
+  const float a = pdfA * pdfA, b = pdfB * pdfB;
+  return a + b > 0 ? a / (a + b) : 0.0f;
+}
+
+Integrator::Integrator(const RenderScene& scene, const MaterialTable& materials, const LightSet& lights,
+                       const Environment& environment, const IntegratorSettings& settings)
+    : scene_(scene), materials_(materials), lights_(lights), environment_(environment), settings_(settings) {}
+
+PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const {
+  PathSample out;
+  Rgb beta{1, 1, 1};
+  Ray ray = cameraRay;
+  float prevBsdfPdf = 0;
+  Vec3f prevPosition;
+
+  for (int depth = 0;; ++depth) {
+    const std::optional<SurfaceHit> hit = scene_.intersect(ray);
+    if (!hit) {
+      const Rgb le = environment_.eval(ray.direction);
+      if (maxComponent(le) > 0) {
+        const float w = depth == 0 ? 1.0f : powerHeuristic(prevBsdfPdf, lights_.pdfEnvironment(ray.direction));
+        out.radiance += beta * le * w;
+      }
+      break;
+    }
+    const Vec3f wo = -ray.direction;
+    const ShadingPoint sp = evaluateMaterial(materials_, *hit, wo);
+    if (depth == 0) {
+      out.hit = true;
+      out.distance = hit->t;
+      out.normal = sp.frame.n;
+      out.albedo = sp.bsdf.baseColor;
+    }
+    if (maxComponent(sp.emission) > 0) {
+      float w = 1.0f;
+      if (depth > 0)
+        w = powerHeuristic(prevBsdfPdf, lights_.pdfTriangle(hit->instance, hit->primitive, prevPosition,
+                                                             hit->position, hit->geometricNormal));
+      out.radiance += beta * sp.emission * w;
+    }
+    if (depth >= settings_.maxDepth) break;
+
+    const Bsdf bsdf(sp.bsdf);
+    const Vec3f woLocal = sp.frame.toLocal(wo);
+    const Vec3f origin = offsetOrigin(hit->position, sp.geometricNormal);
+    const std::uint32_t dim = kDimFirstBounce + std::uint32_t(depth) * kDimensionsPerBounce;
+
+    // Next-event estimation.
+    if (!lights_.empty()) {
+      const std::optional<LightSample> ls = lights_.sample(hit->position, sampler.get1D(dim), sampler.get2D(dim + 1));
+      if (ls && dot(ls->wi, sp.geometricNormal) > 0) {
+        const Vec3f wiLocal = sp.frame.toLocal(ls->wi);
+        const Rgb f = bsdf.eval(woLocal, wiLocal) * std::max(0.0f, wiLocal.z);
+        if (maxComponent(f) > 0) {
+          Ray shadow{origin, ls->wi, 0.0f, kInfinityF};
+          if (std::isfinite(ls->distance)) shadow.tMax = length(hit->position + ls->wi * ls->distance - origin) * (1 - 1e-4f);
+          if (!scene_.occluded(shadow)) {
+            const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(woLocal, wiLocal));
+            out.radiance += beta * f * ls->radiance * (w / ls->pdf);
+          }
+        }
+      }
+    }
+
+    // Continue the path by sampling the BSDF.
+    const std::optional<BsdfSample> bs = bsdf.sample(woLocal, sampler.get1D(dim + 2), sampler.get2D(dim + 3));
+    if (!bs) break;
+    const Vec3f wi = normalize(sp.frame.toWorld(bs->wi));
+    if (dot(wi, sp.geometricNormal) <= 0) break;  // a shading-normal artefact: would go through the surface
+    beta *= bs->f * (bs->wi.z / bs->pdf);
+    prevBsdfPdf = bs->pdf;
+    prevPosition = hit->position;
+    ray = Ray{origin, wi, 0.0f, kInfinityF};
+
+    if (depth + 1 >= settings_.rouletteDepth) {
+      const float survive = std::min(1.0f, maxComponent(beta));
+      if (!(survive > 0)) break;
+      if (survive < 1) {
+        if (sampler.get1D(dim + 4) >= survive) break;
+        beta = beta / survive;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace lensrt

@@ -1,0 +1,51 @@
+// Unidirectional path tracing: next-event estimation to one light per vertex
+// plus BSDF sampling, combined by multiple importance sampling (power
+// heuristic), Russian roulette on the path throughput.
+#pragma once
+
+#include "core/ray.h"
+#include "core/vec.h"
+#include "render/environment.h"
+#include "render/lights.h"
+#include "render/material_eval.h"
+#include "render/sampler.h"
+#include "scene/render_scene.h"
+
+namespace lensrt {
+
+struct IntegratorSettings {
+  // Scattering events per path: 0 shows only emitters and the environment seen
+  // directly, 1 adds direct lighting, and so on.
+  int maxDepth = 8;
+  // Russian roulette starts after this many bounces.
+  int rouletteDepth = 3;
+};
+
+// One camera path's result: radiance and what the first hit says (for AOVs).
+struct PathSample {
+  Rgb radiance{0, 0, 0};
+  bool hit = false;
+  float distance = 0;   // along the unit camera ray, metres
+  Vec3f normal{0, 0, 0};  // world shading normal at the first hit, facing the camera
+  Rgb albedo{0, 0, 0};    // base colour at the first hit
+};
+
+class Integrator {
+ public:
+  Integrator(const RenderScene& scene, const MaterialTable& materials, const LightSet& lights,
+             const Environment& environment, const IntegratorSettings& settings);
+
+  // `ray` must have a unit direction.
+  PathSample trace(const Ray& ray, const Sampler& sampler) const;
+
+ private:
+  const RenderScene& scene_;
+  const MaterialTable& materials_;
+  const LightSet& lights_;
+  const Environment& environment_;
+  IntegratorSettings settings_;
+};
+
+float powerHeuristic(float pdfA, float pdfB);
+
+}  // namespace lensrt

@@ -1,0 +1,152 @@
+#include "render/lights.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/constants.h"
+
+namespace lensrt {
+
+float spotAttenuation(const PunctualLight& light, const Vec3f& towardPoint) {
+  // KHR_lights_punctual's reference: saturate(cd * scale + offset)^2.
+  const float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
+  const float scale = 1.0f / std::max(1e-3f, cosInner - cosOuter);
+  const float t = std::clamp((dot(light.direction, towardPoint) - cosOuter) * scale, 0.0f, 1.0f);
+  return t * t;
+}
+
+float rangeWindow(const PunctualLight& light, float distance) {
+  if (!(light.range > 0)) return 1.0f;
+  const float r = distance / light.range;
+  const float w = std::clamp(1 - r * r * r * r, 0.0f, 1.0f);
+  return w * w;
+}
+
+LightSet::LightSet(const MaterialTable& materials, const Environment& environment, const Bounds3f& bounds)
+    : materials_(&materials), environment_(&environment) {
+  const SceneDesc& scene = materials.scene();
+  instanceFirstTriangle_.assign(scene.instances.size(), -1);
+  std::vector<float> power;
+  for (const PunctualLight& l : scene.lights) {
+    const float i = std::max(0.0f, luminance(l.intensity));
+    const float radius = bounds.empty() ? 1.0f : 0.5f * length(bounds.diagonal());
+    switch (l.type) {
+      case PunctualLight::Type::Point: power.push_back(4 * kPiF * i); break;
+      case PunctualLight::Type::Spot:
+        power.push_back(2 * kPiF * (1 - std::cos(0.5f * (l.innerConeAngle + l.outerConeAngle))) * i);
+        break;
+      case PunctualLight::Type::Directional: power.push_back(kPiF * radius * radius * i); break;
+    }
+  }
+  firstTriangle_ = power.size();
+  for (std::size_t k = 0; k < scene.instances.size(); ++k) {
+    const MeshInstance& inst = scene.instances[k];
+    if (inst.mesh < 0 || std::size_t(inst.mesh) >= scene.meshes.size()) continue;
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    const Material& m = materials.material(mesh.material);
+    if (!m.isEmissive()) continue;
+    instanceFirstTriangle_[k] = std::int64_t(triangles_.size());
+    // A mirroring transform reverses the winding; glTF says the front face flips with it.
+    const float handed = inst.worldFromObject.determinant3x3() < 0 ? -1.0f : 1.0f;
+    // Textures can only dim the factor (texels are at most 1 in practice), so
+    // power from the factor is a fair picking weight.
+    const float le = luminance(m.emissive) * (m.doubleSided ? 2.0f : 1.0f);
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+      const std::uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
+      Triangle tri;
+      tri.p0 = inst.worldFromObject.point(mesh.positions[i0]);
+      tri.e1 = inst.worldFromObject.point(mesh.positions[i1]) - tri.p0;
+      tri.e2 = inst.worldFromObject.point(mesh.positions[i2]) - tri.p0;
+      const Vec3f c = cross(tri.e1, tri.e2);
+      const float len = length(c);
+      tri.area = 0.5f * len;
+      tri.normal = len > 0 ? c * (handed / len) : Vec3f{0, 0, 1};
+      if (!mesh.uvs.empty()) {
+        tri.uv0 = mesh.uvs[i0];
+        tri.uv1 = mesh.uvs[i1];
+        tri.uv2 = mesh.uvs[i2];
+      }
+      tri.material = mesh.material;
+      triangles_.push_back(tri);
+      power.push_back(std::isfinite(tri.area) ? kPiF * tri.area * le : 0.0f);
+    }
+  }
+  environmentIndex_ = power.size();
+  if (!environment.isBlack()) {
+    const float radius = bounds.empty() ? 1.0f : std::max(1e-3f, 0.5f * length(bounds.diagonal()));
+    // Flux of a uniform sky of radiance L through a disk the size of the scene.
+    power.push_back(kPiF * kPiF * radius * radius * environment.averageLuminance());
+  }
+  pick_ = Distribution1D(power);
+}
+
+std::optional<LightSample> LightSet::samplePunctual(const PunctualLight& l, const Vec3f& p) const {
+  if (l.type == PunctualLight::Type::Directional) {
+    return LightSample{-l.direction, kInfinityF, l.intensity, 1.0f, true};
+  }
+  const Vec3f d = l.position - p;
+  const float dist2 = lengthSquared(d);
+  if (!(dist2 > 0)) return std::nullopt;
+  const float dist = std::sqrt(dist2);
+  const Vec3f wi = d / dist;
+  float scale = rangeWindow(l, dist) / dist2;
+  if (l.type == PunctualLight::Type::Spot) scale *= spotAttenuation(l, -wi);
+  if (!(scale > 0)) return std::nullopt;
+  return LightSample{wi, dist, l.intensity * scale, 1.0f, true};
+}
+
+std::optional<LightSample> LightSet::sampleTriangle(const Triangle& t, const Vec3f& p, const Vec2f& u) const {
+  // Uniform on the triangle (square-root parameterisation).
+  const float su = std::sqrt(u.x);
+  const float b1 = 1 - su, b2 = u.y * su;
+  const Vec3f q = t.p0 + t.e1 * b1 + t.e2 * b2;
+  const Vec3f d = q - p;
+  const float dist2 = lengthSquared(d);
+  if (!(dist2 > 0) || !(t.area > 0)) return std::nullopt;
+  const float dist = std::sqrt(dist2);
+  const Vec3f wi = d / dist;
+  const float cosLight = -dot(wi, t.normal);  // > 0 when p sees the front
+  const Vec2f uv = t.uv0 * (1 - b1 - b2) + t.uv1 * b1 + t.uv2 * b2;
+  const Rgb le = emittedRadiance(*materials_, t.material, uv, cosLight);
+  if (!(maxComponent(le) > 0) || std::abs(cosLight) < 1e-7f) return std::nullopt;
+  return LightSample{wi, dist, le, dist2 / (std::abs(cosLight) * t.area), false};
+}
+
+std::optional<LightSample> LightSet::sample(const Vec3f& p, float uPick, const Vec2f& u) const {
+  if (pick_.empty()) return std::nullopt;
+  const std::size_t i = pick_.sample(uPick);
+  const float pickPdf = pick_.probability(i);
+  std::optional<LightSample> s;
+  if (i < firstTriangle_) {
+    s = samplePunctual(materials_->scene().lights[i], p);
+  } else if (i < environmentIndex_) {
+    s = sampleTriangle(triangles_[i - firstTriangle_], p, u);
+  } else if (auto e = environment_->sample(u)) {
+    s = LightSample{e->direction, kInfinityF, e->radiance, e->pdf, false};
+  }
+  if (!s || !(s->pdf > 0)) return std::nullopt;
+  s->pdf *= pickPdf;
+  return s;
+}
+
+float LightSet::pdfTriangle(int instance, unsigned primitive, const Vec3f& p, const Vec3f& lightPoint,
+                            const Vec3f& lightNormal) const {
+  if (instance < 0 || std::size_t(instance) >= instanceFirstTriangle_.size()) return 0;
+  const std::int64_t first = instanceFirstTriangle_[instance];
+  if (first < 0) return 0;
+  const std::size_t k = std::size_t(first) + primitive;
+  if (k >= triangles_.size()) return 0;
+  const Triangle& t = triangles_[k];
+  const Vec3f d = lightPoint - p;
+  const float dist2 = lengthSquared(d);
+  const float cosLight = std::abs(dot(d, lightNormal)) / std::sqrt(dist2);
+  if (!(cosLight > 0) || !(t.area > 0)) return 0;
+  return pick_.probability(firstTriangle_ + k) * dist2 / (cosLight * t.area);
+}
+
+float LightSet::pdfEnvironment(const Vec3f& direction) const {
+  if (environment_->isBlack() || environmentIndex_ >= pick_.size()) return 0;
+  return pick_.probability(environmentIndex_) * environment_->pdf(direction);
+}
+
+}  // namespace lensrt

@@ -1,0 +1,78 @@
+#include "render/material_eval.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/texture_sampling.h"
+
+namespace lensrt {
+
+MaterialTable::MaterialTable(const SceneDesc& scene) : scene_(&scene), extras_(scene.materials.size() + 1) {
+  default_.name = "glTF default";
+}
+
+const Material& MaterialTable::material(int index) const {
+  return index >= 0 && std::size_t(index) < scene_->materials.size() ? scene_->materials[index] : default_;
+}
+const MaterialTable::Extra& MaterialTable::extra(int index) const {
+  return index >= 0 && std::size_t(index) < scene_->materials.size() ? extras_[index + 1] : extras_[0];
+}
+MaterialTable::Extra& MaterialTable::extra(int index) {
+  return index >= 0 && std::size_t(index) < scene_->materials.size() ? extras_[index + 1] : extras_[0];
+}
+
+namespace {
+
+Vec4f lookup(const SceneDesc& scene, const TextureRef& ref, const Vec2f& uv) {
+  if (!ref.valid() || std::size_t(ref.texture) >= scene.textures.size()) return {1, 1, 1, 1};
+  return sampleTexture(scene.textures[ref.texture], uv);
+}
+
+}  // namespace
+
+Rgb emittedRadiance(const MaterialTable& materials, int index, const Vec2f& uv, float cosFront) {
+  const Material& m = materials.material(index);
+  if (!m.isEmissive()) return {0, 0, 0};
+  if (!m.doubleSided && cosFront <= 0) return {0, 0, 0};
+  return m.emissive * lookup(materials.scene(), m.emissiveTexture, uv).xyz();
+}
+
+ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo) {
+  const SceneDesc& scene = materials.scene();
+  const Material& m = materials.material(hit.material);
+  ShadingPoint sp;
+
+  // Shade whichever side the viewer is on: the BRDF is reflective on both sides.
+  const bool back = dot(wo, hit.geometricNormal) < 0;
+  sp.geometricNormal = back ? -hit.geometricNormal : hit.geometricNormal;
+  Vec3f n = back ? -hit.shadingNormal : hit.shadingNormal;
+
+  if (m.normalTexture.valid() && (hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0)) {
+    const Vec4f t = lookup(scene, m.normalTexture, hit.uv);
+    const Vec3f local{(2 * t.x - 1) * m.normalScale, (2 * t.y - 1) * m.normalScale, 2 * t.z - 1};
+    // Gram-Schmidt the interpolated tangent against the shading normal.
+    const Vec3f tangent0 = hit.tangent.xyz();
+    Vec3f tangent = tangent0 - n * dot(n, tangent0);
+    if (lengthSquared(tangent) > 1e-12f) {
+      tangent = normalize(tangent);
+      const Vec3f bitangent = cross(n, tangent) * (hit.tangent.w < 0 ? -1.0f : 1.0f);
+      const Vec3f mapped = tangent * local.x + bitangent * local.y + n * local.z;
+      if (lengthSquared(mapped) > 0 && isFinite(mapped)) n = normalize(mapped);
+    }
+  }
+  // A shading normal facing away from the viewer would make the BRDF zero for
+  // every light: fall back to the geometric normal there.
+  if (dot(n, wo) <= 1e-4f) n = sp.geometricNormal;
+  sp.frame = Frame::fromNormal(n);
+
+  const Vec4f base = lookup(scene, m.baseColorTexture, hit.uv);
+  sp.bsdf.baseColor = Rgb{m.baseColor.x * base.x, m.baseColor.y * base.y, m.baseColor.z * base.z};
+  const Vec4f mr = lookup(scene, m.metallicRoughnessTexture, hit.uv);
+  sp.bsdf.roughness = std::clamp(m.roughness * mr.y, 0.0f, 1.0f);
+  sp.bsdf.metallic = std::clamp(m.metallic * mr.z, 0.0f, 1.0f);
+  sp.bsdf.specularWeight = materials.extra(hit.material).specularWeight;
+  sp.emission = emittedRadiance(materials, hit.material, hit.uv, dot(wo, hit.geometricNormal));
+  return sp;
+}
+
+}  // namespace lensrt

@@ -1,0 +1,52 @@
+// Material evaluation at a ray hit: textures times factors, normal mapping,
+// emission. Produces the BSDF parameters and the shading frame.
+#pragma once
+
+#include <vector>
+
+#include "core/frame.h"
+#include "core/vec.h"
+#include "render/bsdf.h"
+#include "scene/render_scene.h"
+#include "scene/scene_desc.h"
+
+namespace lensrt {
+
+// The render-time view of the scene's materials, with the parameters glTF
+// extensions may add on top of scene_desc's Material (index -1 is glTF's
+// default material: white, metallic 1, roughness 1).
+class MaterialTable {
+ public:
+  struct Extra {
+    float specularWeight = 1.0f;  // KHR_materials_specular strength
+  };
+
+  explicit MaterialTable(const SceneDesc& scene);
+
+  const Material& material(int index) const;
+  const Extra& extra(int index) const;
+  Extra& extra(int index);  // for tests and future extensions
+  const SceneDesc& scene() const { return *scene_; }
+
+ private:
+  const SceneDesc* scene_;
+  Material default_;
+  std::vector<Extra> extras_;  // [0] is the default material, then materials + 1
+};
+
+struct ShadingPoint {
+  Frame frame;           // z = (normal-mapped) shading normal, facing the viewer
+  Vec3f geometricNormal; // unit, facing the viewer
+  BsdfParams bsdf;
+  Rgb emission{0, 0, 0};  // radiance leaving toward the viewer
+};
+
+// wo: unit world direction toward the viewer.
+ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo);
+
+// Emitted radiance of a material at uv leaving a surface whose winding normal
+// makes cosine `cosFront` with the direction of travel (front-face emission only
+// unless the material is double sided).
+Rgb emittedRadiance(const MaterialTable& materials, int material, const Vec2f& uv, float cosFront);
+
+}  // namespace lensrt

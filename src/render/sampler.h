@@ -1,0 +1,44 @@
+// Deterministic per-pixel sample streams: every value is a pure function of
+// (seed, pixel index, sample index, dimension), so images do not depend on the
+// thread count, the tiling or the order tiles run in.
+//
+// Each 2D dimension pair is an Owen-scrambled Sobol (0,2)-sequence, padded
+// across dimensions by an independent per-dimension shuffle of the sample
+// index (Burley 2020, "Practical Hash-based Owen Scrambling"). Any prefix of
+// the samples of one pixel is well stratified in every pair.
+#pragma once
+
+#include <cstdint>
+
+#include "core/vec.h"
+
+namespace lensrt {
+
+// Dimension layout of a camera path: the camera consumes the first dimensions
+// in this order, then each bounce takes kDimensionsPerBounce more.
+enum SampleDimension : std::uint32_t {
+  kDimFilm = 0,        // 2D: offset inside the pixel
+  kDimLens = 1,        // 2D: aperture / exit pupil
+  kDimWavelength = 2,  // 1D
+  kDimFirstBounce = 3,
+};
+inline constexpr std::uint32_t kDimensionsPerBounce = 5;  // light pick, light 2D, lobe, BSDF 2D, roulette
+
+std::uint32_t hashCombine(std::uint32_t seed, std::uint32_t v);
+std::uint32_t hash64(std::uint64_t v);
+
+class Sampler {
+ public:
+  Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sampleIndex);
+
+  // Values in [0, 1). A "dimension" is a stream id; 1D and 2D requests on the same
+  // id return the first coordinate(s) of the same point.
+  float get1D(std::uint32_t dimension) const;
+  Vec2f get2D(std::uint32_t dimension) const;
+
+ private:
+  std::uint32_t pixelSeed_;
+  std::uint32_t sampleIndex_;
+};
+
+}  // namespace lensrt
