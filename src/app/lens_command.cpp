@@ -1,11 +1,224 @@
-// Placeholder until the lens command lands; replaced by its owner.
-#include "app/command.h"
+// `lensrt lens`: lens tools. `info` prints every first-order quantity of a
+// prescription; further sub-subcommands register through lens_subcommands.h.
+#include <fmt/core.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/lens_subcommands.h"
+#include "core/constants.h"
+#include "core/warnings.h"
+#include "optics/exit_pupil.h"
+#include "optics/focus.h"
+#include "optics/lens_readers.h"
+#include "optics/lens_system.h"
+#include "optics/paraxial.h"
 
 namespace lensrt {
+namespace {
 
-CommandAction addLensCommand(CLI::App& app, const CommandContext&) {
-  app.add_subcommand("lens", "(not built yet)");
-  return []() -> int { throw std::runtime_error("the lens command is not built yet"); };
+struct InfoOptions {
+  std::string lens;
+  std::string sensor = "36x24";
+  std::optional<double> fNumber;
+  std::string focus = "inf";
+  std::optional<double> circleOfConfusionMm;
+  bool json = false;
+};
+
+struct Sensor {
+  double width = 36.0, height = 24.0;
+};
+
+Sensor parseSensor(const std::string& text) {
+  const std::size_t x = text.find_first_of("xX");
+  try {
+    if (x != std::string::npos) {
+      std::size_t used1 = 0, used2 = 0;
+      const std::string a = text.substr(0, x), b = text.substr(x + 1);
+      const Sensor s{std::stod(a, &used1), std::stod(b, &used2)};
+      if (used1 == a.size() && used2 == b.size() && s.width > 0 && s.height > 0 && s.width < 1e4 &&
+          s.height < 1e4)
+        return s;
+    }
+  } catch (const std::exception&) {
+  }
+  throw CLI::ValidationError("--sensor", "expected WIDTHxHEIGHT in mm, e.g. 36x24, got '" + text + "'");
+}
+
+double parseFocusMetres(const std::string& text) {
+  if (text == "inf" || text == "infinity") return kInfinity;
+  try {
+    std::size_t used = 0;
+    const double m = std::stod(text, &used);
+    if (used == text.size() && m > 0 && std::isfinite(m)) return m;
+  } catch (const std::exception&) {
+  }
+  throw CLI::ValidationError("--focus", "expected a distance in metres > 0 or 'inf', got '" + text + "'");
+}
+
+// JSON has no infinity: distances at infinity are null.
+nlohmann::json finiteOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+std::string metresText(double mm) {
+  return std::isfinite(mm) ? fmt::format("{:.4g} m", mm / 1000.0) : "infinity";
+}
+
+int runInfo(const InfoOptions& o) {
+  const Sensor sensor = parseSensor(o.sensor);
+  const double focusM = parseFocusMetres(o.focus);
+  if (o.fNumber && !(*o.fNumber > 0)) throw CLI::ValidationError("--fstop", "must be a positive f-number");
+  if (o.circleOfConfusionMm && !(*o.circleOfConfusionMm > 0))
+    throw CLI::ValidationError("--coc", "must be positive");
+
+  std::vector<std::string> warningList;
+  Warnings warnings([&](const std::string& w) {
+    warningList.push_back(w);
+    if (!o.json) fmt::print(stderr, "lensrt: warning: {}\n", w);
+  });
+  const LensPrescription design = loadLens(findLens(o.lens, LENSRT_LENS_DIR));
+  const double widest = computeParaxial(design).fNumber;
+  const LensSystem lens(o.fNumber ? stopDown(design, *o.fNumber, warnings) : design);
+  const ParaxialData& p = lens.paraxial();
+
+  const double focusMm = focusM * 1000.0;
+  const double filmDistance = focusFilmDistance(lens, focusMm);
+  const Conjugate conj = paraxialConjugate(p, focusMm);
+  const double halfDiagonal = std::hypot(sensor.width, sensor.height) / 2.0;
+  const FieldOfView fov = fieldOfView(conj.imageDistance, sensor.width, sensor.height);
+  // Circle of confusion: the common diagonal / 1500 rule (0.029 mm on full frame).
+  const double coc = o.circleOfConfusionMm.value_or(2.0 * halfDiagonal / 1500.0);
+  // DoF formulas measure from the front principal plane; report from the entrance pupil.
+  const double hToPupil = p.entrancePupilZ - p.frontPrincipalZ;
+  const double hyperfocal = hyperfocalDistance(p.efl, p.fNumber, coc) + hToPupil;
+  const DepthOfField dof = std::isinf(focusMm)
+                               ? DepthOfField{hyperfocal, kInfinity}
+                               : depthOfField(p.efl, p.fNumber, coc, conj.objectDistanceFromH);
+  const double nearMm = std::isinf(focusMm) ? hyperfocal : dof.nearLimit + hToPupil;
+  const double farMm = dof.farLimit + hToPupil;
+
+  const ExitPupilBounds bounds(lens, lens.rearZ() + filmDistance, halfDiagonal);
+  const PupilEfficiency eff = measurePupilEfficiency(lens, bounds, sensor.width, sensor.height, 20000);
+  const LensPrescription& rx = lens.prescription();
+
+  if (o.json) {
+    nlohmann::json j;
+    j["name"] = rx.name;
+    j["description"] = rx.description;
+    j["source"] = rx.source;
+    j["file"] = rx.file;
+    j["nominal_focal_length_mm"] =
+        finiteOrNull(rx.nominalFocalLengthMm > 0 ? rx.nominalFocalLengthMm : kInfinity);
+    j["surfaces"] = rx.surfaces.size();
+    j["length_mm"] = p.lastVertexZ;
+    j["efl_mm"] = p.efl;
+    j["bfl_mm"] = p.bfl;
+    j["ffl_mm"] = p.ffl;
+    j["front_focal_point_mm"] = p.frontFocalZ;
+    j["rear_focal_point_mm"] = p.rearFocalZ;
+    j["front_principal_plane_mm"] = p.frontPrincipalZ;
+    j["rear_principal_plane_mm"] = p.rearPrincipalZ;
+    j["front_nodal_point_mm"] = p.frontPrincipalZ;
+    j["rear_nodal_point_mm"] = p.rearPrincipalZ;
+    j["aperture_stop"] = {
+        {"surface", p.stopIndex + 1}, {"position_mm", p.stopZ}, {"diameter_mm", p.stopDiameter}};
+    j["entrance_pupil_pos_mm"] = p.entrancePupilZ;
+    j["entrance_pupil_diameter_mm"] = p.entrancePupilDiameter;
+    j["exit_pupil_pos_mm"] = p.exitPupilZ;
+    j["exit_pupil_diameter_mm"] = p.exitPupilDiameter;
+    j["f_number"] = p.fNumber;
+    j["widest_f_number"] = widest;
+    j["sensor_mm"] = {{"width", sensor.width}, {"height", sensor.height}};
+    j["fov_deg"] = {
+        {"diagonal", fov.diagonalDeg}, {"horizontal", fov.horizontalDeg}, {"vertical", fov.verticalDeg}};
+    j["focus_distance_m"] = finiteOrNull(focusM);
+    j["film_distance_mm"] = filmDistance;
+    j["paraxial_film_distance_mm"] = conj.filmDistance;
+    j["image_distance_mm"] = conj.imageDistance;
+    j["magnification"] = conj.magnification;
+    j["closest_focus_m"] = closestFocusDistanceMm(lens) / 1000.0;
+    j["circle_of_confusion_mm"] = coc;
+    j["hyperfocal_distance_m"] = hyperfocal / 1000.0;
+    j["depth_of_field_m"] = {{"near", finiteOrNull(nearMm / 1000.0)}, {"far", finiteOrNull(farMm / 1000.0)}};
+    j["exit_pupil_efficiency"] = eff.efficiency();
+    j["warnings"] = warningList;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  fmt::print("{}  ({})\n", rx.name, rx.file);
+  if (!rx.description.empty()) fmt::print("  {}\n", rx.description);
+  if (!rx.source.empty()) fmt::print("  source: {}\n", rx.source);
+  fmt::print("Positions are mm along the axis from the first vertex, + toward the film.\n");
+  fmt::print("  surfaces              {} (stop: surface {}), length {:.3f} mm\n", rx.surfaces.size(),
+             p.stopIndex + 1, p.lastVertexZ);
+  fmt::print("  focal length (EFL)    {:.3f} mm{}\n", p.efl,
+             rx.nominalFocalLengthMm > 0 ? fmt::format("  (nominal {:g} mm)", rx.nominalFocalLengthMm) : "");
+  fmt::print("  back focal length     {:.3f} mm    front focal length {:.3f} mm\n", p.bfl, p.ffl);
+  fmt::print("  focal points F, F'    {:.3f}, {:.3f}\n", p.frontFocalZ, p.rearFocalZ);
+  fmt::print("  principal planes H,H' {:.3f}, {:.3f}  (nodal points coincide: air both sides)\n",
+             p.frontPrincipalZ, p.rearPrincipalZ);
+  fmt::print("  aperture stop         at {:.3f}, diameter {:.3f} mm\n", p.stopZ, p.stopDiameter);
+  fmt::print("  entrance pupil        at {:.3f}, diameter {:.3f} mm\n", p.entrancePupilZ,
+             p.entrancePupilDiameter);
+  fmt::print("  exit pupil            at {:.3f}, diameter {:.3f} mm\n", p.exitPupilZ, p.exitPupilDiameter);
+  fmt::print("  f-number              f/{:.3g}  (widest f/{:.3g})\n", p.fNumber, widest);
+  fmt::print("Sensor {:g} x {:g} mm, focused at {} from the entrance pupil:\n", sensor.width, sensor.height,
+             metresText(focusMm));
+  fmt::print("  film distance         {:.4f} mm behind the last vertex (paraxial estimate {:.4f})\n",
+             filmDistance, conj.filmDistance);
+  fmt::print("  magnification         {:.5g}   image distance from H' {:.3f} mm\n", conj.magnification,
+             conj.imageDistance);
+  fmt::print("  field of view         {:.2f} deg diagonal, {:.2f} horizontal, {:.2f} vertical\n",
+             fov.diagonalDeg, fov.horizontalDeg, fov.verticalDeg);
+  fmt::print("  closest focus         {}\n", metresText(closestFocusDistanceMm(lens)));
+  fmt::print("  hyperfocal distance   {}  (circle of confusion {:.4f} mm)\n", metresText(hyperfocal), coc);
+  fmt::print("  depth of field        {} to {}\n", metresText(nearMm), metresText(farMm));
+  fmt::print("  exit pupil efficiency {:.1f}% of rays sampled from the pupil bounds pass\n",
+             100.0 * eff.efficiency());
+  return 0;
+}
+
+}  // namespace
+
+CommandAction addLensInfoCommand(CLI::App& lensApp, const CommandContext&) {
+  auto options = std::make_shared<InfoOptions>();
+  CLI::App* info =
+      lensApp.add_subcommand("info", "Print a lens's focal lengths, cardinal points, pupils, FOV and DoF");
+  info->add_option("lens", options->lens, "Lens file (.lens, .json, .dat) or library name, e.g. dgauss-50mm")
+      ->required();
+  info->add_option("--sensor", options->sensor, "Sensor size WIDTHxHEIGHT in mm")->capture_default_str();
+  info->add_option("--fstop", options->fNumber, "Stop down to this f-number (default: widest)");
+  info->add_option("--focus", options->focus, "Focus distance in metres from the entrance pupil, or 'inf'")
+      ->capture_default_str();
+  info->add_option("--coc", options->circleOfConfusionMm,
+                   "Circle of confusion in mm (default: diagonal / 1500)");
+  info->add_flag("--json", options->json, "Print JSON (distances in mm unless named _m)");
+  return [options] { return runInfo(*options); };
+}
+
+CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
+  CLI::App* lensApp = app.add_subcommand("lens", "Lens tools: inspect prescriptions");
+  lensApp->require_subcommand(1);
+  // One entry per `lens` sub-subcommand (diagram and plot join here).
+  std::vector<std::pair<CLI::App*, CommandAction>> subs;
+  const auto add = [&](auto registerFn) {
+    const std::size_t before = lensApp->get_subcommands({}).size();
+    CommandAction action = registerFn(*lensApp, context);
+    subs.emplace_back(lensApp->get_subcommands({}).at(before), std::move(action));
+  };
+  add(addLensInfoCommand);
+  return [subs] {
+    for (const auto& [sub, action] : subs)
+      if (sub->parsed()) return action();
+    return 2;
+  };
 }
 
 }  // namespace lensrt

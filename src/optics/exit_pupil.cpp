@@ -199,3 +199,29 @@ double ExitPupilBounds::pdf(Vec2d filmPoint, Vec2d pupilPoint) const {
 }
 
 }  // namespace lensrt
+
+#include "optics/sample_sequence.h"
+
+namespace lensrt {
+
+PupilEfficiency measurePupilEfficiency(const LensSystem& lens, const ExitPupilBounds& bounds,
+                                       double sensorWidthMm, double sensorHeightMm, long samples,
+                                       unsigned long long seed) {
+  SplitMix64 rng(seed);
+  PupilEfficiency result;
+  for (long i = 0; i < samples; ++i) {
+    const Vec2d film{(rng.uniform() - 0.5) * sensorWidthMm, (rng.uniform() - 0.5) * sensorHeightMm};
+    const Vec2d u{rng.uniform(), rng.uniform()};
+    const auto s = bounds.sample(film, u);
+    if (!s) {
+      ++result.empty;
+      continue;
+    }
+    ++result.sampled;
+    const Vec3d origin{film.x, film.y, bounds.filmZ()};
+    if (lens.traceFromFilm({origin, s->point - origin})) ++result.passed;
+  }
+  return result;
+}
+
+}  // namespace lensrt

@@ -56,3 +56,19 @@ class ExitPupilBounds {
 };
 
 }  // namespace lensrt
+
+namespace lensrt {
+
+struct PupilEfficiency {
+  long sampled = 0;  // film samples that got a pupil sample
+  long passed = 0;   // of those, rays that passed the whole lens
+  long empty = 0;    // film samples with no bounds (outside the image circle)
+  double efficiency() const { return sampled ? static_cast<double>(passed) / sampled : 0.0; }
+};
+// Fraction of rays sampled from the bounds that pass the lens, for film points
+// uniform over a centred sensor (mm). Deterministic for a given seed.
+PupilEfficiency measurePupilEfficiency(const LensSystem& lens, const ExitPupilBounds& bounds,
+                                       double sensorWidthMm, double sensorHeightMm, long samples,
+                                       unsigned long long seed = 1);
+
+}  // namespace lensrt

@@ -1,0 +1,19 @@
+// `lensrt lens <sub>`: each sub-subcommand lives in its own file and
+// registers on the `lens` subcommand, returning the action to run when it is
+// chosen (see command.h). lens_command.cpp calls every hook listed here.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "app/command.h"
+
+namespace lensrt {
+
+// lens_command.cpp: `lens info FILE [--sensor WxH] [--fstop N] [--focus M] [--json]`.
+CommandAction addLensInfoCommand(CLI::App& lens, const CommandContext& context);
+// Hooks for later files (lens_diagram_command.cpp, lens_plot_command.cpp);
+// add their calls to the table in lens_command.cpp when they land.
+CommandAction addLensDiagramCommand(CLI::App& lens, const CommandContext& context);
+CommandAction addLensPlotCommand(CLI::App& lens, const CommandContext& context);
+
+}  // namespace lensrt
