@@ -87,7 +87,8 @@ struct PunctualLight {
 };
 
 struct CameraDesc {
-  std::string name;
+  std::string name;        // the node's name, or the glTF camera's when the node has none
+  std::string cameraName;  // the glTF camera object's own name
   int node = -1;
   Transform worldFromCamera;  // looks down -Z, +Y up
   bool orthographic = false;

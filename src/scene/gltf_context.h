@@ -1,0 +1,33 @@
+// State shared by the pieces of the glTF loader (internal to src/scene).
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <string>
+#include <string_view>
+
+#include "core/error.h"
+#include "core/warnings.h"
+
+namespace lensrt::gltf {
+
+struct Context {
+  const tinygltf::Model& model;
+  std::string file;  // for messages
+  Warnings& warnings;
+
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(file, message); }
+
+  void warnUnsupportedExtension(const std::string& name) const {
+    warnings.warn("extension " + name + " is not supported and is ignored");
+  }
+};
+
+// The extensions the loader implements (KHR_mesh_quantization needs nothing
+// beyond the accessor reader's integer formats).
+inline bool isSupportedExtension(std::string_view name) {
+  return name == "KHR_lights_punctual" || name == "KHR_materials_emissive_strength" ||
+         name == "EXT_mesh_gpu_instancing" || name == "KHR_mesh_quantization";
+}
+
+}  // namespace lensrt::gltf

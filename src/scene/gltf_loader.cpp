@@ -1,0 +1,311 @@
+#include "scene/gltf_loader.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.h"
+#include "scene/gltf_accessor.h"
+#include "scene/gltf_context.h"
+#include "scene/gltf_lights.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_mesh.h"
+#include "scene/gltf_values.h"
+
+namespace lensrt {
+namespace {
+
+using gltf::Context;
+
+// tinygltf reports several lines; our errors are one line.
+std::string oneLine(const std::string& text) {
+  std::string out;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    if (line.empty()) continue;
+    if (!out.empty()) out += "; ";
+    out += line;
+  }
+  return out;
+}
+
+bool isGlb(const std::filesystem::path& file, const std::string& name) {
+  std::ifstream in(file, std::ios::binary);
+  std::array<unsigned char, 12> header{};
+  in.read(reinterpret_cast<char*>(header.data()), header.size());
+  const auto got = static_cast<std::size_t>(in.gcount());
+  const bool magic = got >= 4 && header[0] == 'g' && header[1] == 'l' && header[2] == 'T' && header[3] == 'F';
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (!magic) {
+    if (ext == ".glb") throw InputError(name, "not a binary glTF: the header does not start with 'glTF'");
+    return false;
+  }
+  if (got < 12) throw InputError(name, "truncated .glb header");
+  const std::uint32_t version =
+      header[4] | (header[5] << 8) | (header[6] << 16) | (std::uint32_t{header[7]} << 24);
+  if (version != 2)
+    throw InputError(name, "unsupported .glb version " + std::to_string(version) + " (expected 2)");
+  return true;
+}
+
+tinygltf::Model parse(const std::filesystem::path& file, const std::string& name, Warnings& warnings) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw InputError(name, "file not found");
+  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name, "not a regular file");
+  const bool binary = isGlb(file, name);
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(gltf::deferImageDecoding, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
+                         : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+  std::istringstream lines(warn);
+  for (std::string line; std::getline(lines, line);)
+    if (!oneLine(line).empty()) warnings.warn(oneLine(line));
+  if (!ok) throw InputError(name, err.empty() ? "cannot parse the glTF file" : oneLine(err));
+  return model;
+}
+
+void checkExtensions(const Context& ctx) {
+  for (const std::string& ext : ctx.model.extensionsRequired)
+    if (!gltf::isSupportedExtension(ext)) ctx.fail("required extension " + ext + " is not supported");
+  for (const std::string& ext : ctx.model.extensionsUsed)
+    if (!gltf::isSupportedExtension(ext)) ctx.warnUnsupportedExtension(ext);
+  if (!ctx.model.animations.empty()) ctx.warnings.warn("animations are ignored (the scene renders at rest)");
+  if (!ctx.model.skins.empty())
+    ctx.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
+}
+
+Transform trs(const Context& ctx, const std::string& label, const std::vector<double>& t,
+              const std::vector<double>& r, const std::vector<double>& s) {
+  if ((!t.empty() && t.size() != 3) || (!r.empty() && r.size() != 4) || (!s.empty() && s.size() != 3))
+    ctx.fail(label + ": translation/rotation/scale have the wrong number of values");
+  Transform x;
+  if (!t.empty()) x = Transform::translate({t[0], t[1], t[2]});
+  if (!r.empty()) x = x * Transform::rotateQuaternion(r[0], r[1], r[2], r[3]);
+  if (!s.empty()) x = x * Transform::scale({s[0], s[1], s[2]});
+  return x;
+}
+
+bool finite(const Transform& t) {
+  for (const auto& row : t.matrix())
+    for (const double v : row)
+      if (!std::isfinite(v)) return false;
+  return true;
+}
+
+Transform localTransform(const Context& ctx, int index, const tinygltf::Node& node) {
+  const std::string label = "node " + std::to_string(index);
+  Transform local;
+  if (!node.matrix.empty()) {
+    if (node.matrix.size() != 16) ctx.fail(label + ": matrix needs 16 values");
+    local = Transform::fromColumnMajor(node.matrix.data());
+  } else {
+    local = trs(ctx, label, node.translation, node.rotation, node.scale);
+  }
+  if (!finite(local)) ctx.fail(label + ": transform is not finite");
+  return local;
+}
+
+// The camera's rigid frame: glTF cameras look down local -Z with +Y up; scale
+// in the node transform would only distort the renderer's rays, so drop it.
+Transform cameraFrame(const Transform& world) {
+  const Vec3d eye = world.point(Vec3d(0, 0, 0));
+  const Vec3d forward = world.vector(Vec3d(0, 0, -1));
+  const Vec3d up = world.vector(Vec3d(0, 1, 0));
+  if (!(length(forward) > 0) || !(length(up) > 0)) return Transform::translate(eye);
+  return Transform::lookAt(eye, eye + normalize(forward), normalize(up));
+}
+
+class Traversal {
+ public:
+  Traversal(const Context& ctx, SceneDesc& desc) : ctx_(ctx), desc_(desc) {}
+
+  void run(const std::vector<int>& roots) {
+    struct Item {
+      int node;
+      Transform parent;
+    };
+    std::vector<Item> stack;
+    // Reverse so that the depth-first order (and the camera order) follows the file.
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, Transform()});
+    std::vector<bool> visited(ctx_.model.nodes.size(), false);
+    while (!stack.empty()) {
+      const Item item = std::move(stack.back());
+      stack.pop_back();
+      if (item.node < 0 || static_cast<std::size_t>(item.node) >= ctx_.model.nodes.size())
+        ctx_.fail("node " + std::to_string(item.node) + " does not exist");
+      if (visited[static_cast<std::size_t>(item.node)])
+        ctx_.fail("node " + std::to_string(item.node) +
+                  " is reached twice (a cycle or a shared child; glTF nodes must form trees)");
+      visited[static_cast<std::size_t>(item.node)] = true;
+      const tinygltf::Node& node = ctx_.model.nodes[static_cast<std::size_t>(item.node)];
+      const Transform world = item.parent * localTransform(ctx_, item.node, node);
+      if (!finite(world)) ctx_.fail("node " + std::to_string(item.node) + ": world transform is not finite");
+      visit(item.node, node, world);
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
+    }
+  }
+
+  const gltf::MeshStats& stats() const { return stats_; }
+
+ private:
+  void visit(int index, const tinygltf::Node& node, const Transform& world) {
+    if (node.skin >= 0)
+      ctx_.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
+    for (const auto& [name, value] : node.extensions)
+      if (!gltf::isSupportedExtension(name)) ctx_.warnUnsupportedExtension(name);
+    if (node.mesh >= 0) placeMesh(index, node, world);
+    if (node.camera >= 0) addCamera(index, node, world);
+    if (const tinygltf::Value* ext = gltf::extension(node.extensions, "KHR_lights_punctual")) {
+      const std::optional<double> light = gltf::numberMember(*ext, "light");
+      if (!light) ctx_.fail("node " + std::to_string(index) + ": KHR_lights_punctual without a light index");
+      if (auto l = gltf::convertLight(ctx_, static_cast<int>(*light), world)) desc_.lights.push_back(*l);
+    }
+  }
+
+  void placeMesh(int index, const tinygltf::Node& node, const Transform& world) {
+    auto [it, inserted] = meshes_.try_emplace(node.mesh);
+    if (inserted) it->second = gltf::convertMesh(ctx_, node.mesh, desc_.meshes, stats_);
+    std::vector<Transform> placements;
+    if (const tinygltf::Value* ext = gltf::extension(node.extensions, "EXT_mesh_gpu_instancing"))
+      placements = gpuInstances(index, *ext, world);
+    else
+      placements.push_back(world);
+    for (const Transform& xf : placements)
+      for (const int mesh : it->second) desc_.instances.push_back({mesh, xf});
+  }
+
+  // EXT_mesh_gpu_instancing: each instance is world * T * R * S from its attributes.
+  std::vector<Transform> gpuInstances(int index, const tinygltf::Value& ext, const Transform& world) {
+    const std::string label = "node " + std::to_string(index) + " EXT_mesh_gpu_instancing";
+    const tinygltf::Value* attributes = gltf::member(ext, "attributes");
+    if (!attributes || !attributes->IsObject()) ctx_.fail(label + ": no attributes");
+    const auto read = [&](const char* name, int components) -> std::vector<float> {
+      const std::optional<double> accessor = gltf::numberMember(*attributes, name);
+      if (!accessor) return {};
+      return gltf::readFloats(ctx_, static_cast<int>(*accessor), components, (label + " " + name).c_str());
+    };
+    const std::vector<float> t = read("TRANSLATION", 3), r = read("ROTATION", 4), s = read("SCALE", 3);
+    std::size_t count = 0;
+    for (const auto& [v, n] : {std::pair{&t, 3}, std::pair{&r, 4}, std::pair{&s, 3}}) {
+      if (v->empty()) continue;
+      const std::size_t c = v->size() / static_cast<std::size_t>(n);
+      if (count != 0 && c != count) ctx_.fail(label + ": attributes have different counts");
+      count = c;
+    }
+    if (count == 0) ctx_.warnings.warn(label + ": no instances");
+    std::vector<Transform> out;
+    out.reserve(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto slice = [&](const std::vector<float>& v, int n) {
+        return v.empty() ? std::vector<double>{}
+                         : std::vector<double>(v.begin() + static_cast<long>(k * n),
+                                               v.begin() + static_cast<long>((k + 1) * n));
+      };
+      const Transform xf = world * trs(ctx_, label, slice(t, 3), slice(r, 4), slice(s, 3));
+      if (!finite(xf)) ctx_.fail(label + ": instance transform is not finite");
+      out.push_back(xf);
+    }
+    return out;
+  }
+
+  void addCamera(int index, const tinygltf::Node& node, const Transform& world) {
+    if (static_cast<std::size_t>(node.camera) >= ctx_.model.cameras.size())
+      ctx_.fail("node " + std::to_string(index) + ": camera " + std::to_string(node.camera) +
+                " does not exist");
+    const tinygltf::Camera& gc = ctx_.model.cameras[static_cast<std::size_t>(node.camera)];
+    CameraDesc cam;
+    cam.cameraName = gc.name;
+    cam.name =
+        !node.name.empty() ? node.name : (!gc.name.empty() ? gc.name : "node " + std::to_string(index));
+    cam.node = index;
+    cam.worldFromCamera = cameraFrame(world);
+    if (gc.type == "orthographic") {
+      cam.orthographic = true;
+      ctx_.warnings.warn("orthographic cameras are not supported: camera '" + cam.name +
+                         "' is kept but renders as a perspective camera (yfov 39.6 degrees)");
+    } else {
+      const tinygltf::PerspectiveCamera& p = gc.perspective;
+      if (p.yfov > 0 && p.yfov < kPi)
+        cam.yfov = static_cast<float>(p.yfov);
+      else
+        ctx_.warnings.warn("camera '" + cam.name + "': yfov out of range, using 39.6 degrees");
+      if (p.aspectRatio > 0 && std::isfinite(p.aspectRatio))
+        cam.aspectRatio = static_cast<float>(p.aspectRatio);
+      if (p.znear > 0 && std::isfinite(p.znear)) cam.znear = static_cast<float>(p.znear);
+    }
+    desc_.cameras.push_back(std::move(cam));
+  }
+
+  const Context& ctx_;
+  SceneDesc& desc_;
+  std::map<int, std::vector<int>> meshes_;  // glTF mesh -> desc meshes (one per primitive)
+  gltf::MeshStats stats_;
+};
+
+std::vector<int> sceneRoots(const Context& ctx, int sceneIndex) {
+  const auto& scenes = ctx.model.scenes;
+  if (sceneIndex >= 0 && static_cast<std::size_t>(sceneIndex) >= scenes.size())
+    ctx.fail("scene index " + std::to_string(sceneIndex) + " out of range (the file has " +
+             std::to_string(scenes.size()) + " scene" + (scenes.size() == 1 ? "" : "s") + ")");
+  if (sceneIndex < 0) {
+    if (ctx.model.defaultScene >= 0 && static_cast<std::size_t>(ctx.model.defaultScene) < scenes.size())
+      sceneIndex = ctx.model.defaultScene;
+    else if (!scenes.empty())
+      sceneIndex = 0;
+  }
+  if (sceneIndex >= 0) return scenes[static_cast<std::size_t>(sceneIndex)].nodes;
+  // No scenes at all: render every node that is nobody's child.
+  ctx.warnings.warn("the file defines no scene: rendering all root nodes");
+  std::vector<bool> isChild(ctx.model.nodes.size(), false);
+  for (const tinygltf::Node& n : ctx.model.nodes)
+    for (const int c : n.children)
+      if (c >= 0 && static_cast<std::size_t>(c) < isChild.size()) isChild[static_cast<std::size_t>(c)] = true;
+  std::vector<int> roots;
+  for (std::size_t i = 0; i < isChild.size(); ++i)
+    if (!isChild[i]) roots.push_back(static_cast<int>(i));
+  return roots;
+}
+
+void checkRenderable(const Context& ctx, const SceneDesc& desc, const gltf::MeshStats& stats) {
+  if (stats.degenerateTriangles > 0)
+    ctx.warnings.warn(std::to_string(stats.degenerateTriangles) +
+                      " degenerate (zero-area) triangles dropped");
+  if (ctx.model.meshes.empty()) ctx.fail("nothing to render: the file has no meshes");
+  if (desc.instances.empty()) {
+    if (stats.degenerateTriangles > 0 && stats.triangles == 0)
+      ctx.fail("nothing to render: all triangles are degenerate");
+    ctx.fail("nothing to render: the scene places no triangle meshes");
+  }
+  const Bounds3f b = desc.worldBounds();
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(b.lo[a]) || !std::isfinite(b.hi[a]) || std::abs(b.lo[a]) > gltf::kMaxCoordinate ||
+        std::abs(b.hi[a]) > gltf::kMaxCoordinate)
+      ctx.fail("world-space coordinates beyond 1e15 (check the node transforms)");
+}
+
+}  // namespace
+
+SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings) {
+  const std::string name = file.string();
+  const tinygltf::Model model = parse(file, name, warnings);
+  const Context ctx{model, name, warnings};
+  checkExtensions(ctx);
+  SceneDesc desc;
+  desc.sourceFile = name;
+  gltf::loadMaterials(ctx, desc);
+  Traversal traversal(ctx, desc);
+  traversal.run(sceneRoots(ctx, sceneIndex));
+  checkRenderable(ctx, desc, traversal.stats());
+  return desc;
+}
+
+}  // namespace lensrt

@@ -1,0 +1,27 @@
+// glTF 2.0 (.gltf, .glb, embedded data URIs) into the neutral SceneDesc.
+//
+// What is loaded: the node hierarchy of one scene (TRS or matrix), triangle
+// primitives (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN, indexed or not, any
+// accessor component type, normalized integers, sparse accessors, byteStride),
+// repeated meshes as instances, EXT_mesh_gpu_instancing, perspective cameras
+// (orthographic ones are kept, marked and warned about), metallic-roughness
+// materials with baseColor / metallicRoughness / normal / emissive textures,
+// KHR_materials_emissive_strength, KHR_lights_punctual (units: see
+// gltf_lights.cpp). Everything else the file uses is named in one warning each;
+// a required extension we do not implement is an error.
+#pragma once
+
+#include <filesystem>
+
+#include "core/warnings.h"
+#include "scene/scene_desc.h"
+
+namespace lensrt {
+
+// sceneIndex: -1 for the file's default scene (its "scene" property, else scene
+// 0), otherwise a 0-based index into the file's scenes. Throws InputError(file,
+// one-line message) for unreadable or broken input, and when the scene has no
+// non-degenerate triangle to render.
+SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings);
+
+}  // namespace lensrt

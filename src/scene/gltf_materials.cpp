@@ -1,0 +1,247 @@
+#include "scene/gltf_materials.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "scene/gltf_values.h"
+
+namespace lensrt::gltf {
+namespace {
+
+float srgbToLinear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+// Decoded pixels as tinygltf's stb_image wrapper returns them (RGBA, 8 or 16 bit).
+struct Pixels {
+  int width = 0, height = 0, components = 0, bits = 8;
+  std::vector<unsigned char> data;
+};
+
+class TextureLoader {
+ public:
+  TextureLoader(const Context& ctx, SceneDesc& desc) : ctx_(ctx), desc_(desc) {}
+
+  // TextureRef for a material slot, or none (with a warning) when unusable.
+  TextureRef ref(int textureIndex, int texCoord, bool srgb, const std::string& material) {
+    if (textureIndex < 0) return {};
+    if (texCoord != 0) {
+      ctx_.warnings.warn(
+          "textures on TEXCOORD_1 or higher are not supported: those slots use the factor only");
+      return {};
+    }
+    const auto key = std::make_pair(textureIndex, srgb);
+    if (const auto it = cache_.find(key); it != cache_.end()) return {it->second, 0};
+    std::optional<Texture> tex = load(textureIndex, srgb, material);
+    const int index = tex ? static_cast<int>(desc_.textures.size()) : -1;
+    if (tex) desc_.textures.push_back(std::move(*tex));
+    cache_[key] = index;
+    return {index, 0};
+  }
+
+ private:
+  std::optional<Texture> load(int textureIndex, bool srgb, const std::string& material) {
+    const auto& textures = ctx_.model.textures;
+    const std::string where = "material '" + material + "'";
+    if (static_cast<std::size_t>(textureIndex) >= textures.size()) {
+      ctx_.warnings.warn(where + ": texture " + std::to_string(textureIndex) +
+                         " does not exist; using the factor only");
+      return std::nullopt;
+    }
+    const tinygltf::Texture& gt = textures[static_cast<std::size_t>(textureIndex)];
+    for (const auto& [name, value] : gt.extensions) ctx_.warnUnsupportedExtension(name);
+    const auto& images = ctx_.model.images;
+    if (gt.source < 0 || static_cast<std::size_t>(gt.source) >= images.size()) {
+      ctx_.warnings.warn(where + ": texture " + std::to_string(textureIndex) +
+                         " has no usable image; using the factor only");
+      return std::nullopt;
+    }
+    const tinygltf::Image& image = images[static_cast<std::size_t>(gt.source)];
+    const std::string imageName = !image.uri.empty() && image.uri.rfind("data:", 0) != 0
+                                      ? image.uri
+                                      : (image.name.empty() ? "#" + std::to_string(gt.source) : image.name);
+    std::string why;
+    const std::optional<Pixels> pixels = decode(image, why);
+    if (!pixels) {
+      ctx_.warnings.warn("texture image '" + imageName + "' " + why + "; using the material factor only");
+      return std::nullopt;
+    }
+    Texture tex = toTexture(*pixels, srgb);
+    tex.name = imageName;
+    applySampler(gt.sampler, tex);
+    return tex;
+  }
+
+  std::optional<Pixels> decode(const tinygltf::Image& image, std::string& why) const {
+    const unsigned char* bytes = nullptr;
+    std::size_t size = 0;
+    if (image.as_is && !image.image.empty()) {
+      bytes = image.image.data();
+      size = image.image.size();
+    } else if (image.bufferView >= 0) {
+      const auto& views = ctx_.model.bufferViews;
+      if (static_cast<std::size_t>(image.bufferView) >= views.size()) {
+        why = "refers to a missing bufferView";
+        return std::nullopt;
+      }
+      const tinygltf::BufferView& view = views[static_cast<std::size_t>(image.bufferView)];
+      if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= ctx_.model.buffers.size()) {
+        why = "refers to a missing buffer";
+        return std::nullopt;
+      }
+      const auto& data = ctx_.model.buffers[static_cast<std::size_t>(view.buffer)].data;
+      if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
+        why = "lies outside its buffer";
+        return std::nullopt;
+      }
+      bytes = data.data() + view.byteOffset;
+      size = view.byteLength;
+    } else {
+      why = "could not be read";
+      return std::nullopt;
+    }
+    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+      why = "is empty or too large";
+      return std::nullopt;
+    }
+    tinygltf::Image decoded;
+    std::string err, warn;
+    // nullptr options: tinygltf's default, which expands to 4 channels.
+    if (!tinygltf::LoadImageData(&decoded, 0, &err, &warn, 0, 0, bytes, static_cast<int>(size), nullptr)) {
+      why = "could not be decoded";
+      return std::nullopt;
+    }
+    Pixels p{decoded.width, decoded.height, decoded.component, decoded.bits, std::move(decoded.image)};
+    const std::size_t bytesPerChannel = p.bits == 16 ? 2 : 1;
+    if (p.width <= 0 || p.height <= 0 || p.components < 1 || p.components > 4 ||
+        (p.bits != 8 && p.bits != 16) ||
+        p.data.size() < static_cast<std::size_t>(p.width) * static_cast<std::size_t>(p.height) *
+                            static_cast<std::size_t>(p.components) * bytesPerChannel) {
+      why = "decoded to an unexpected pixel format";
+      return std::nullopt;
+    }
+    return p;
+  }
+
+  static Texture toTexture(const Pixels& p, bool srgb) {
+    // 8-bit colour goes through a table: decoding is per texel, pow is slow.
+    std::array<float, 256> table{};
+    for (int i = 0; i < 256; ++i) table[i] = srgb ? srgbToLinear(i / 255.0f) : i / 255.0f;
+    const auto channel = [&](std::size_t at, bool colour) {
+      if (p.bits == 16) {
+        const float v = (p.data[2 * at] | (p.data[2 * at + 1] << 8)) / 65535.0f;
+        return colour && srgb ? srgbToLinear(v) : v;
+      }
+      return colour ? table[p.data[at]] : p.data[at] / 255.0f;
+    };
+    Texture t;
+    t.width = p.width;
+    t.height = p.height;
+    const std::size_t n = static_cast<std::size_t>(p.width) * static_cast<std::size_t>(p.height);
+    const auto c = static_cast<std::size_t>(p.components);
+    t.texels.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t at = i * c;
+      Vec4f& out = t.texels[i];
+      if (c >= 3) {
+        out = {channel(at, true), channel(at + 1, true), channel(at + 2, true),
+               c == 4 ? channel(at + 3, false) : 1};
+      } else {  // grey, grey + alpha
+        const float g = channel(at, true);
+        out = {g, g, g, c == 2 ? channel(at + 1, false) : 1};
+      }
+    }
+    return t;
+  }
+
+  void applySampler(int samplerIndex, Texture& tex) const {
+    if (samplerIndex < 0) return;  // glTF default: repeat, linear
+    if (static_cast<std::size_t>(samplerIndex) >= ctx_.model.samplers.size()) {
+      ctx_.warnings.warn("texture sampler " + std::to_string(samplerIndex) +
+                         " does not exist; using defaults");
+      return;
+    }
+    const tinygltf::Sampler& s = ctx_.model.samplers[static_cast<std::size_t>(samplerIndex)];
+    tex.wrapRepeatS = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+    tex.wrapRepeatT = s.wrapT != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+    tex.mirrorS = s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT;
+    tex.mirrorT = s.wrapT == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT;
+    tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+  }
+
+  const Context& ctx_;
+  SceneDesc& desc_;
+  std::map<std::pair<int, bool>, int> cache_;  // (glTF texture, sRGB) -> desc texture or -1
+};
+
+float finiteOr(double v, float fallback) {
+  return std::isfinite(v) ? static_cast<float>(v) : fallback;
+}
+
+void warnTextureInfoExtensions(const Context& ctx, const tinygltf::ExtensionMap& extensions) {
+  for (const auto& [name, value] : extensions) ctx.warnUnsupportedExtension(name);
+}
+
+}  // namespace
+
+bool deferImageDecoding(tinygltf::Image* image, int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+  if (image->bufferView < 0 && bytes && size > 0) {
+    image->image.assign(bytes, bytes + size);
+    image->as_is = true;
+  }
+  return true;
+}
+
+void loadMaterials(const Context& ctx, SceneDesc& desc) {
+  TextureLoader textures(ctx, desc);
+  for (std::size_t i = 0; i < ctx.model.materials.size(); ++i) {
+    const tinygltf::Material& gm = ctx.model.materials[i];
+    const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
+    Material m;
+    m.name = gm.name.empty() ? "#" + std::to_string(i) : gm.name;
+    if (pbr.baseColorFactor.size() == 4)
+      m.baseColor = {finiteOr(pbr.baseColorFactor[0], 1), finiteOr(pbr.baseColorFactor[1], 1),
+                     finiteOr(pbr.baseColorFactor[2], 1), finiteOr(pbr.baseColorFactor[3], 1)};
+    m.baseColorTexture =
+        textures.ref(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true, m.name);
+    m.metallic = finiteOr(pbr.metallicFactor, 1);
+    m.roughness = finiteOr(pbr.roughnessFactor, 1);
+    m.metallicRoughnessTexture = textures.ref(pbr.metallicRoughnessTexture.index,
+                                              pbr.metallicRoughnessTexture.texCoord, false, m.name);
+    m.normalTexture = textures.ref(gm.normalTexture.index, gm.normalTexture.texCoord, false, m.name);
+    m.normalScale = finiteOr(gm.normalTexture.scale, 1);
+    float strength = 1;
+    if (const tinygltf::Value* ext = extension(gm.extensions, "KHR_materials_emissive_strength"))
+      strength = std::max(0.0f, finiteOr(numberMember(*ext, "emissiveStrength").value_or(1.0), 1));
+    if (gm.emissiveFactor.size() == 3)
+      m.emissive = Vec3f{finiteOr(gm.emissiveFactor[0], 0), finiteOr(gm.emissiveFactor[1], 0),
+                         finiteOr(gm.emissiveFactor[2], 0)} *
+                   strength;
+    m.emissiveTexture = textures.ref(gm.emissiveTexture.index, gm.emissiveTexture.texCoord, true, m.name);
+    if (gm.occlusionTexture.index >= 0)
+      ctx.warnings.warn("occlusion textures are ignored (the path tracer computes occlusion itself)");
+    if (gm.alphaMode == "MASK") {
+      m.alphaMode = AlphaMode::Mask;
+    } else if (gm.alphaMode == "BLEND") {
+      m.alphaMode = AlphaMode::Blend;
+      ctx.warnings.warn("alphaMode BLEND is rendered as MASK with alphaCutoff 0.5");
+    } else if (gm.alphaMode != "OPAQUE") {
+      ctx.warnings.warn("material '" + m.name + "': unknown alphaMode '" + gm.alphaMode + "', using OPAQUE");
+    }
+    m.alphaCutoff = finiteOr(gm.alphaCutoff, 0.5f);
+    m.doubleSided = gm.doubleSided;
+    for (const auto& [name, value] : gm.extensions)
+      if (!isSupportedExtension(name)) ctx.warnUnsupportedExtension(name);
+    for (const tinygltf::ExtensionMap* e :
+         {&pbr.baseColorTexture.extensions, &pbr.metallicRoughnessTexture.extensions,
+          &gm.normalTexture.extensions, &gm.emissiveTexture.extensions})
+      warnTextureInfoExtensions(ctx, *e);
+    desc.materials.push_back(std::move(m));
+  }
+}
+
+}  // namespace lensrt::gltf

@@ -1,0 +1,162 @@
+#include "scene/gltf_mesh.h"
+
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "scene/gltf_accessor.h"
+
+namespace lensrt::gltf {
+namespace {
+
+template <class V, int N>
+std::vector<V> group(const std::vector<float>& flat) {
+  std::vector<V> out(flat.size() / N);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if constexpr (N == 2) out[i] = {flat[2 * i], flat[2 * i + 1]};
+    if constexpr (N == 3) out[i] = {flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]};
+    if constexpr (N == 4) out[i] = {flat[4 * i], flat[4 * i + 1], flat[4 * i + 2], flat[4 * i + 3]};
+  }
+  return out;
+}
+
+const char* modeName(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS:
+      return "POINTS";
+    case TINYGLTF_MODE_LINE:
+      return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP:
+      return "LINE_LOOP";
+    case 3:
+      return "LINE_STRIP";
+    default:
+      return nullptr;
+  }
+}
+
+// Warns about vertex attributes that change the look but are not rendered.
+void warnIgnoredAttributes(const Context& ctx, const tinygltf::Primitive& prim) {
+  for (const auto& [name, accessor] : prim.attributes) {
+    if (name.rfind("TEXCOORD_", 0) == 0 && name != "TEXCOORD_0")
+      ctx.warnings.warn("extra UV sets (TEXCOORD_1 and up) are ignored");
+    else if (name.rfind("COLOR_", 0) == 0)
+      ctx.warnings.warn("vertex colours (COLOR_n) are ignored");
+    else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
+      ctx.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
+  }
+  if (!prim.targets.empty()) ctx.warnings.warn("morph targets are not supported: meshes render without them");
+  for (const auto& [name, value] : prim.extensions)
+    if (!isSupportedExtension(name)) ctx.warnUnsupportedExtension(name);
+}
+
+// Triangle k of a strip or fan as the glTF spec orders its vertices (keeps
+// the winding of the first triangle).
+std::array<std::uint32_t, 3> stripTriangle(const std::vector<std::uint32_t>& v, std::size_t k) {
+  if (k % 2 == 0) return {v[k], v[k + 1], v[k + 2]};
+  return {v[k], v[k + 2], v[k + 1]};
+}
+std::array<std::uint32_t, 3> fanTriangle(const std::vector<std::uint32_t>& v, std::size_t k) {
+  return {v[k + 1], v[k + 2], v[0]};
+}
+
+bool degenerate(const std::vector<Vec3f>& p, const std::array<std::uint32_t, 3>& t) {
+  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
+  const Vec3d a(p[t[0]]), b(p[t[1]]), c(p[t[2]]);
+  return lengthSquared(cross(b - a, c - a)) == 0.0;
+}
+
+}  // namespace
+
+std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats) {
+  if (index < 0 || static_cast<std::size_t>(index) >= ctx.model.meshes.size())
+    ctx.fail("mesh " + std::to_string(index) + " does not exist");
+  const tinygltf::Mesh& gm = ctx.model.meshes[static_cast<std::size_t>(index)];
+  const std::string baseName = gm.name.empty() ? "#" + std::to_string(index) : gm.name;
+  if (!gm.weights.empty()) ctx.warnings.warn("morph targets are not supported: meshes render without them");
+  std::vector<int> result;
+  for (std::size_t p = 0; p < gm.primitives.size(); ++p) {
+    const tinygltf::Primitive& prim = gm.primitives[p];
+    const std::string name = gm.primitives.size() > 1 ? baseName + "/" + std::to_string(p) : baseName;
+    const std::string label = "mesh '" + name + "'";
+    if (const char* other = modeName(prim.mode)) {
+      ctx.warnings.warn(std::string("primitive mode ") + other + " is not rendered (skipped)");
+      continue;
+    }
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      ctx.warnings.warn("primitive mode " + std::to_string(prim.mode) + " is invalid (skipped)");
+      continue;
+    }
+    warnIgnoredAttributes(ctx, prim);
+    const auto position = prim.attributes.find("POSITION");
+    if (position == prim.attributes.end()) {
+      ctx.warnings.warn(label + ": a primitive without POSITION is skipped");
+      continue;
+    }
+    if (prim.material < -1 || prim.material >= static_cast<int>(ctx.model.materials.size()))
+      ctx.fail(label + ": material " + std::to_string(prim.material) + " does not exist");
+
+    Mesh mesh;
+    mesh.name = name;
+    mesh.material = prim.material;
+    mesh.positions = group<Vec3f, 3>(readFloats(ctx, position->second, 3, (label + " POSITION").c_str()));
+    const std::size_t n = mesh.positions.size();
+    for (const Vec3f& v : mesh.positions) {
+      if (!isFinite(v)) ctx.fail(label + ": vertex position is NaN or infinite");
+      if (std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate || std::abs(v.z) > kMaxCoordinate)
+        ctx.fail(label + ": vertex coordinate beyond 1e15");
+    }
+    const auto optional = [&](const char* attr, int components) {
+      const auto it = prim.attributes.find(attr);
+      if (it == prim.attributes.end()) return std::vector<float>{};
+      std::vector<float> v = readFloats(ctx, it->second, components, (label + " " + attr).c_str());
+      if (v.size() != n * static_cast<std::size_t>(components))
+        ctx.fail(label + ": " + attr + " has " + std::to_string(v.size() / components) +
+                 " elements, POSITION has " + std::to_string(n));
+      return v;
+    };
+    mesh.normals = group<Vec3f, 3>(optional("NORMAL", 3));
+    mesh.tangents = group<Vec4f, 4>(optional("TANGENT", 4));
+    mesh.uvs = group<Vec2f, 2>(optional("TEXCOORD_0", 2));
+
+    std::vector<std::uint32_t> vertices;
+    if (prim.indices >= 0) {
+      vertices = readIndices(ctx, prim.indices, (label + " indices").c_str());
+      for (const std::uint32_t i : vertices)
+        if (i >= n)
+          ctx.fail(label + ": index " + std::to_string(i) + " beyond the vertex count " + std::to_string(n));
+    } else {
+      vertices.resize(n);
+      std::iota(vertices.begin(), vertices.end(), 0u);
+    }
+    std::size_t triangles = 0;
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
+      triangles = vertices.size() / 3;
+    } else if (vertices.size() >= 3) {
+      triangles = vertices.size() - 2;
+    }
+    mesh.indices.reserve(3 * triangles);
+    for (std::size_t k = 0; k < triangles; ++k) {
+      std::array<std::uint32_t, 3> t;
+      if (prim.mode == TINYGLTF_MODE_TRIANGLES)
+        t = {vertices[3 * k], vertices[3 * k + 1], vertices[3 * k + 2]};
+      else if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP)
+        t = stripTriangle(vertices, k);
+      else
+        t = fanTriangle(vertices, k);
+      if (degenerate(mesh.positions, t)) {
+        ++stats.degenerateTriangles;
+        continue;
+      }
+      mesh.indices.insert(mesh.indices.end(), t.begin(), t.end());
+    }
+    if (mesh.indices.empty()) continue;
+    stats.triangles += mesh.triangleCount();
+    result.push_back(static_cast<int>(meshes.size()));
+    meshes.push_back(std::move(mesh));
+  }
+  return result;
+}
+
+}  // namespace lensrt::gltf
