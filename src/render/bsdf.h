@@ -1,6 +1,10 @@
 // The glTF 2.0 metallic-roughness BRDF (spec appendix B): Lambert diffuse
 // under a GGX specular layer for dielectrics (Schlick Fresnel, f0 = 0.04), GGX
 // with a base-colour Schlick Fresnel for metals, blended by `metallic`.
+// One departure, for energy conservation: the diffuse under the dielectric
+// layer is weighted by the layer's directional albedo on both sides (Kelemen
+// and Szirmay-Kalos) instead of glTF's 1 - F(v.h), which reflects more than it
+// receives at grazing angles.
 // Specular uses the height-correlated Smith masking-shadowing term and is
 // sampled from the distribution of visible normals (Heitz 2018).
 //
@@ -54,8 +58,10 @@ class Bsdf {
 
  private:
   float specularPdf(const Vec3f& wo, const Vec3f& wi) const;
+  float dielectricSpecularAlbedo(float mu) const;
   BsdfParams p_;
   float alpha_;
+  float diffuseNorm_ = 1;  // 1 / (1 - average specular albedo)
 };
 
 }  // namespace lensrt

@@ -5,7 +5,8 @@
 
 namespace lensrt {
 
-Distribution1D::Distribution1D(const std::vector<float>& weights) : weights_(weights.size()), cdf_(weights.size() + 1) {
+Distribution1D::Distribution1D(const std::vector<float>& weights)
+    : weights_(weights.size()), cdf_(weights.size() + 1) {
   for (std::size_t i = 0; i < weights.size(); ++i) {
     const double w = weights[i];
     weights_[i] = std::isfinite(w) && w > 0 ? w : 0.0;
@@ -34,7 +35,8 @@ Distribution2D::Distribution2D(const std::vector<float>& weights, int width, int
   std::vector<float> rowTotals(height);
   rows_.reserve(height);
   for (int y = 0; y < height; ++y) {
-    std::vector<float> row(weights.begin() + std::size_t(y) * width, weights.begin() + std::size_t(y + 1) * width);
+    std::vector<float> row(weights.begin() + std::size_t(y) * width,
+                           weights.begin() + std::size_t(y + 1) * width);
     rows_.emplace_back(row);
     rowTotals[y] = float(rows_.back().total());
   }

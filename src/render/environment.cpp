@@ -22,7 +22,8 @@ Environment Environment::latLong(const Image& image) {
   const int r = image.channelIndex("R"), g = image.channelIndex("G"), b = image.channelIndex("B");
   int grey = r >= 0 ? r : (image.channelIndex("Y") >= 0 ? image.channelIndex("Y") : -1);
   if (grey < 0 && image.channelCount() > 0) grey = 0;
-  if (grey < 0 || image.width <= 0 || image.height <= 0) throw std::invalid_argument("environment map has no channels");
+  if (grey < 0 || image.width <= 0 || image.height <= 0)
+    throw std::invalid_argument("environment map has no channels");
   Environment e;
   e.width_ = image.width;
   e.height_ = image.height;

@@ -32,7 +32,9 @@ void PixelAccumulator::add(const PathSample& s, float weight) {
   }
 }
 
-void PixelAccumulator::addBlocked() { ++count_; }
+void PixelAccumulator::addBlocked() {
+  ++count_;
+}
 
 void PixelAccumulator::write(const AovSelection& aovs, float* out) const {
   const double n = double(count_);

@@ -39,7 +39,8 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
     if (!hit) {
       const Rgb le = environment_.eval(ray.direction);
       if (maxComponent(le) > 0) {
-        const float w = depth == 0 ? 1.0f : powerHeuristic(prevBsdfPdf, lights_.pdfEnvironment(ray.direction));
+        const float w =
+            depth == 0 ? 1.0f : powerHeuristic(prevBsdfPdf, lights_.pdfEnvironment(ray.direction));
         out.radiance += beta * le * w;
       }
       break;
@@ -56,7 +57,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
       float w = 1.0f;
       if (depth > 0)
         w = powerHeuristic(prevBsdfPdf, lights_.pdfTriangle(hit->instance, hit->primitive, prevPosition,
-                                                             hit->position, hit->geometricNormal));
+                                                            hit->position, hit->geometricNormal));
       out.radiance += beta * sp.emission * w;
     }
     if (depth >= settings_.maxDepth) break;
@@ -68,13 +69,15 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
 
     // Next-event estimation.
     if (!lights_.empty()) {
-      const std::optional<LightSample> ls = lights_.sample(hit->position, sampler.get1D(dim), sampler.get2D(dim + 1));
+      const std::optional<LightSample> ls =
+          lights_.sample(hit->position, sampler.get1D(dim), sampler.get2D(dim + 1));
       if (ls && dot(ls->wi, sp.geometricNormal) > 0) {
         const Vec3f wiLocal = sp.frame.toLocal(ls->wi);
         const Rgb f = bsdf.eval(woLocal, wiLocal) * std::max(0.0f, wiLocal.z);
         if (maxComponent(f) > 0) {
           Ray shadow{origin, ls->wi, 0.0f, kInfinityF};
-          if (std::isfinite(ls->distance)) shadow.tMax = length(hit->position + ls->wi * ls->distance - origin) * (1 - 1e-4f);
+          if (std::isfinite(ls->distance))
+            shadow.tMax = length(hit->position + ls->wi * ls->distance - origin) * (1 - 1e-4f);
           if (!scene_.occluded(shadow)) {
             const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(woLocal, wiLocal));
             out.radiance += beta * f * ls->radiance * (w / ls->pdf);

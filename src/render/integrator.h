@@ -25,7 +25,7 @@ struct IntegratorSettings {
 struct PathSample {
   Rgb radiance{0, 0, 0};
   bool hit = false;
-  float distance = 0;   // along the unit camera ray, metres
+  float distance = 0;     // along the unit camera ray, metres
   Vec3f normal{0, 0, 0};  // world shading normal at the first hit, facing the camera
   Rgb albedo{0, 0, 0};    // base colour at the first hit
 };

@@ -31,11 +31,15 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
     const float i = std::max(0.0f, luminance(l.intensity));
     const float radius = bounds.empty() ? 1.0f : 0.5f * length(bounds.diagonal());
     switch (l.type) {
-      case PunctualLight::Type::Point: power.push_back(4 * kPiF * i); break;
+      case PunctualLight::Type::Point:
+        power.push_back(4 * kPiF * i);
+        break;
       case PunctualLight::Type::Spot:
         power.push_back(2 * kPiF * (1 - std::cos(0.5f * (l.innerConeAngle + l.outerConeAngle))) * i);
         break;
-      case PunctualLight::Type::Directional: power.push_back(kPiF * radius * radius * i); break;
+      case PunctualLight::Type::Directional:
+        power.push_back(kPiF * radius * radius * i);
+        break;
     }
   }
   firstTriangle_ = power.size();
@@ -52,7 +56,8 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
     // power from the factor is a fair picking weight.
     const float le = luminance(m.emissive) * (m.doubleSided ? 2.0f : 1.0f);
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-      const std::uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
+      const std::uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1],
+                          i2 = mesh.indices[3 * t + 2];
       Triangle tri;
       tri.p0 = inst.worldFromObject.point(mesh.positions[i0]);
       tri.e1 = inst.worldFromObject.point(mesh.positions[i1]) - tri.p0;

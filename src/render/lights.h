@@ -17,11 +17,11 @@
 namespace lensrt {
 
 struct LightSample {
-  Vec3f wi;          // world, unit, from the shading point toward the light
-  float distance;    // to the light point; infinity for the environment and directional lights
-  Rgb radiance;      // arriving at the shading point along -wi, before the BRDF
-  float pdf;         // solid angle (including the light pick); for delta lights the pick probability
-  bool delta;        // point, spot, directional: no MIS with BSDF sampling
+  Vec3f wi;        // world, unit, from the shading point toward the light
+  float distance;  // to the light point; infinity for the environment and directional lights
+  Rgb radiance;    // arriving at the shading point along -wi, before the BRDF
+  float pdf;       // solid angle (including the light pick); for delta lights the pick probability
+  bool delta;      // point, spot, directional: no MIS with BSDF sampling
 };
 
 class LightSet {

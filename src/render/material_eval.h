@@ -35,8 +35,8 @@ class MaterialTable {
 };
 
 struct ShadingPoint {
-  Frame frame;           // z = (normal-mapped) shading normal, facing the viewer
-  Vec3f geometricNormal; // unit, facing the viewer
+  Frame frame;            // z = (normal-mapped) shading normal, facing the viewer
+  Vec3f geometricNormal;  // unit, facing the viewer
   BsdfParams bsdf;
   Rgb emission{0, 0, 0};  // radiance leaving toward the viewer
 };

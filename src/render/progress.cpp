@@ -23,12 +23,16 @@ Progress::Style Progress::styleFor(std::FILE* stream, bool quiet) {
 }
 
 Progress::Progress(std::uint64_t totalSamples, Style style, std::FILE* stream)
-    : total_(std::max<std::uint64_t>(1, totalSamples)), style_(style), stream_(stream),
+    : total_(std::max<std::uint64_t>(1, totalSamples)),
+      style_(style),
+      stream_(stream),
       start_(std::chrono::steady_clock::now()) {
   if (style_ != Style::Quiet) thread_ = std::thread([this] { run(); });
 }
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 void Progress::finish() {
   {
@@ -43,7 +47,8 @@ void Progress::finish() {
 
 void Progress::run() {
   // Redraw a bar often; print a log line rarely.
-  const auto period = style_ == Style::Terminal ? std::chrono::milliseconds(250) : std::chrono::milliseconds(5000);
+  const auto period =
+      style_ == Style::Terminal ? std::chrono::milliseconds(250) : std::chrono::milliseconds(5000);
   std::unique_lock lock(mutex_);
   while (!wake_.wait_for(lock, period, [this] { return stop_; })) print(false);
 }
@@ -54,8 +59,8 @@ void Progress::print(bool final) {
   const double fraction = double(done) / double(total_);
   const double rate = elapsed > 0 ? double(done) / elapsed : 0.0;
   const double eta = rate > 0 ? double(total_ - done) / rate : 0.0;
-  const std::string stats = fmt::format("{:5.1f}%  {:.3g} Msamples/s  elapsed {}  ETA {}", 100 * fraction, rate * 1e-6,
-                                        clock(elapsed), clock(eta));
+  const std::string stats = fmt::format("{:5.1f}%  {:.3g} Msamples/s  elapsed {}  ETA {}", 100 * fraction,
+                                        rate * 1e-6, clock(elapsed), clock(eta));
   if (style_ == Style::Terminal) {
     constexpr int kWidth = 30;
     const int filled = int(fraction * kWidth);

@@ -39,7 +39,8 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
           CameraSample cs;
           cs.film = {float(x) + offset.x, float(y) + offset.y};
           cs.lens = sampler.get2D(kDimLens);
-          cs.wavelengthNm = kWavelengthMinNm + (kWavelengthMaxNm - kWavelengthMinNm) * sampler.get1D(kDimWavelength);
+          cs.wavelengthNm =
+              kWavelengthMinNm + (kWavelengthMaxNm - kWavelengthMinNm) * sampler.get1D(kDimWavelength);
           const std::optional<CameraRay> cr = camera.generateRay(cs);
           if (!cr) {
             acc.addBlocked();

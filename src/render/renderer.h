@@ -23,7 +23,7 @@ struct RenderSettings {
 };
 
 struct RenderOutput {
-  Image image;                     // channels per filmChannels(aovs), size of camera.film()
+  Image image;                       // channels per filmChannels(aovs), size of camera.film()
   std::uint64_t droppedSamples = 0;  // NaN / infinite radiance
 };
 

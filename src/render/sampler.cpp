@@ -31,7 +31,9 @@ std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
 
 // The first two Sobol dimensions: van der Corput (identity matrix, bit reversed)
 // and the Pascal-matrix dimension.
-std::uint32_t sobol0(std::uint32_t index) { return reverseBits(index); }
+std::uint32_t sobol0(std::uint32_t index) {
+  return reverseBits(index);
+}
 std::uint32_t sobol1(std::uint32_t index) {
   std::uint32_t result = 0;
   for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
@@ -64,7 +66,9 @@ std::uint32_t hash64(std::uint64_t v) {
 Sampler::Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sampleIndex)
     : pixelSeed_(hashCombine(hash64(seed), hash64(pixelIndex))), sampleIndex_(sampleIndex) {}
 
-float Sampler::get1D(std::uint32_t dimension) const { return get2D(dimension).x; }
+float Sampler::get1D(std::uint32_t dimension) const {
+  return get2D(dimension).x;
+}
 
 Vec2f Sampler::get2D(std::uint32_t dimension) const {
   const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);

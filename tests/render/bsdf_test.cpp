@@ -1,0 +1,205 @@
+// The BRDF against closed forms: microfacet normalisation, reciprocity, energy
+// bounds, and a chi-square test of the sampling routine against pdf().
+#include "render/bsdf.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "core/constants.h"
+
+namespace lensrt {
+namespace {
+
+Vec3f sphericalDir(double theta, double phi) {
+  return {float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+          float(std::cos(theta))};
+}
+
+// Composite Simpson over the hemisphere in (theta, phi) of g(w) sin(theta).
+double integrateHemisphere(const std::function<double(const Vec3f&)>& g, double theta0, double theta1,
+                           double phi0, double phi1, int n) {
+  const double ht = (theta1 - theta0) / n, hp = (phi1 - phi0) / n;
+  double sum = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double wt = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+    const double theta = theta0 + i * ht;
+    for (int j = 0; j <= n; ++j) {
+      const double wp = (j == 0 || j == n) ? 1 : (j % 2 ? 4 : 2);
+      sum += wt * wp * g(sphericalDir(theta, phi0 + j * hp)) * std::sin(theta);
+    }
+  }
+  return sum * ht * hp / 9;
+}
+
+struct Case {
+  float roughness, metallic, thetaDeg;
+};
+
+std::vector<Case> cases() {
+  std::vector<Case> c;
+  for (float r : {0.5f, 0.75f, 1.0f})
+    for (float m : {0.0f, 0.5f, 1.0f})
+      for (float t : {10.0f, 45.0f, 75.0f}) c.push_back({r, m, t});
+  return c;
+}
+
+BsdfParams paramsFor(const Case& c) {
+  BsdfParams p;
+  p.baseColor = {0.8f, 0.5f, 0.3f};
+  p.metallic = c.metallic;
+  p.roughness = c.roughness;
+  return p;
+}
+
+TEST(Bsdf, GgxDistributionIsNormalised) {
+  // Projected microfacet area equals the macro surface: int D(h) cos(theta_h) dh = 1.
+  for (float r : {0.3f, 0.6f, 1.0f}) {
+    BsdfParams p;
+    p.roughness = r;
+    const Bsdf b(p);
+    const double i =
+        integrateHemisphere([&](const Vec3f& h) { return b.ggxD(h) * h.z; }, 0, kPi / 2, 0, 2 * kPi, 400);
+    EXPECT_NEAR(i, 1.0, 2e-3) << "roughness " << r;
+    // Visible normals integrate to one too: int G1(wo) max(0, wo.h) D(h) / wo.z dh = 1.
+    const Vec3f wo = sphericalDir(1.0, 0.3);
+    const double g1 = 1.0 / (1.0 + b.smithLambda(wo));
+    const double v = integrateHemisphere(
+        [&](const Vec3f& h) { return g1 * std::max(0.0f, dot(wo, h)) * b.ggxD(h) / wo.z; }, 0, kPi / 2, 0,
+        2 * kPi, 400);
+    EXPECT_NEAR(v, 1.0, 2e-3) << "roughness " << r;
+  }
+}
+
+TEST(Bsdf, PureLambertianIsBaseColourOverPi) {
+  BsdfParams p;
+  p.baseColor = {0.2f, 0.5f, 0.9f};
+  p.metallic = 0;
+  p.specularWeight = 0;
+  const Bsdf b(p);
+  const Rgb f = b.eval(sphericalDir(0.3, 0.1), sphericalDir(1.2, 2.0));
+  EXPECT_NEAR(f.x, 0.2 / kPi, 1e-6);
+  EXPECT_NEAR(f.z, 0.9 / kPi, 1e-6);
+  EXPECT_EQ(b.eval(sphericalDir(0.3, 0.1), {0, 0, -1}), Rgb(0, 0, 0));  // reflection only
+}
+
+TEST(Bsdf, IsReciprocal) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (const Case& c : cases()) {
+    const Bsdf b(paramsFor(c));
+    for (int k = 0; k < 50; ++k) {
+      const Vec3f a = sphericalDir(std::acos(u(rng)), 2 * kPi * u(rng));
+      const Vec3f w = sphericalDir(std::acos(u(rng)), 2 * kPi * u(rng));
+      const Rgb f1 = b.eval(a, w), f2 = b.eval(w, a);
+      for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(f1[ch], f2[ch], 1e-5f * std::max(1.0f, f1[ch]));
+    }
+  }
+}
+
+TEST(Bsdf, DirectionalAlbedoIsAtMostOne) {
+  // White base colour is the most reflective case for every metallic value.
+  for (float r : {0.3f, 0.6f, 1.0f})
+    for (float m : {0.0f, 0.5f, 1.0f})
+      for (float t : {0.0f, 30.0f, 60.0f, 85.0f}) {
+        BsdfParams p;
+        p.baseColor = {1, 1, 1};
+        p.metallic = m;
+        p.roughness = r;
+        const Bsdf b(p);
+        const Vec3f wo = sphericalDir(t * kPi / 180, 0.0);
+        const double albedo = integrateHemisphere([&](const Vec3f& wi) { return b.eval(wo, wi).y * wi.z; }, 0,
+                                                  kPi / 2, 0, 2 * kPi, 300);
+        EXPECT_LE(albedo, 1.0 + 2e-3) << "r " << r << " m " << m << " theta " << t;
+        // A white dielectric loses nothing: what the specular layer does not
+        // reflect, the white diffuse under it does (E + (1 - E) = 1).
+        // (Looser at grazing, where the 32x32 albedo table is coarsest.)
+        if (m == 0) EXPECT_NEAR(albedo, 1.0, t > 80 ? 0.03 : 0.01) << "r " << r << " theta " << t;
+        EXPECT_GT(albedo, 0.2) << "r " << r << " m " << m << " theta " << t;
+      }
+}
+
+TEST(Bsdf, SampleReportsTheValuesOfEvalAndPdf) {
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<float> u(0, 1);
+  for (const Case& c : cases()) {
+    const Bsdf b(paramsFor(c));
+    const Vec3f wo = sphericalDir(c.thetaDeg * kPi / 180, 0.7);
+    for (int k = 0; k < 200; ++k) {
+      const auto s = b.sample(wo, u(rng), {u(rng), u(rng)});
+      if (!s) continue;
+      EXPECT_NEAR(s->pdf, b.pdf(wo, s->wi), 1e-4f * s->pdf);
+      EXPECT_NEAR(s->f.y, b.eval(wo, s->wi).y, 1e-4f * s->f.y);
+    }
+  }
+}
+
+// Wilson-Hilferty: upper tail of chi-square with k degrees of freedom.
+double chiSquarePValue(double x, int k) {
+  const double z = (std::cbrt(x / k) - (1 - 2.0 / (9 * k))) / std::sqrt(2.0 / (9 * k));
+  return 0.5 * std::erfc(z / std::sqrt(2.0));
+}
+
+TEST(Bsdf, SamplingMatchesPdfChiSquare) {
+  constexpr int kThetaBins = 16, kPhiBins = 32, kSamples = 100000;
+  const std::vector<Case> all = cases();
+  const double significance = 0.01 / double(all.size());  // Sidak-style correction
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0, 1);
+  for (const Case& c : all) {
+    const Bsdf b(paramsFor(c));
+    const Vec3f wo = sphericalDir(c.thetaDeg * kPi / 180, 0.0);
+    std::vector<double> observed(kThetaBins * kPhiBins + 1, 0), expected(kThetaBins * kPhiBins + 1, 0);
+    int valid = 0;
+    for (int k = 0; k < kSamples; ++k) {
+      const auto s = b.sample(wo, u(rng), {u(rng), u(rng)});
+      if (!s) continue;
+      ++valid;
+      const double theta = std::acos(std::clamp(double(s->wi.z), -1.0, 1.0));
+      double phi = std::atan2(s->wi.y, s->wi.x);
+      if (phi < 0) phi += 2 * kPi;
+      const int ti = std::min(kThetaBins - 1, int(theta / (kPi / 2) * kThetaBins));
+      const int pi = std::min(kPhiBins - 1, int(phi / (2 * kPi) * kPhiBins));
+      observed[ti * kPhiBins + pi] += 1;
+    }
+    observed.back() = kSamples - valid;  // rejected samples: the pdf's missing mass
+    double total = 0;
+    for (int ti = 0; ti < kThetaBins; ++ti)
+      for (int pi = 0; pi < kPhiBins; ++pi) {
+        const double mass = integrateHemisphere([&](const Vec3f& wi) { return b.pdf(wo, wi); },
+                                                ti * kPi / 2 / kThetaBins, (ti + 1) * kPi / 2 / kThetaBins,
+                                                pi * 2 * kPi / kPhiBins, (pi + 1) * 2 * kPi / kPhiBins, 8);
+        expected[ti * kPhiBins + pi] = mass * kSamples;
+        total += mass;
+      }
+    ASSERT_LE(total, 1.0 + 1e-3);
+    expected.back() = std::max(0.0, 1.0 - total) * kSamples;
+    // Pool bins too small for the chi-square approximation.
+    double chi2 = 0, pooledObs = 0, pooledExp = 0;
+    int dof = 0;
+    for (std::size_t i = 0; i < observed.size(); ++i) {
+      if (expected[i] < 5) {
+        pooledObs += observed[i];
+        pooledExp += expected[i];
+        continue;
+      }
+      chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+      ++dof;
+    }
+    if (pooledExp >= 5) {
+      chi2 += (pooledObs - pooledExp) * (pooledObs - pooledExp) / pooledExp;
+      ++dof;
+    } else {
+      EXPECT_LT(pooledObs, 20) << "samples where the pdf says there are none";
+    }
+    const double p = chiSquarePValue(chi2, dof - 1);
+    EXPECT_GT(p, significance) << "roughness " << c.roughness << " metallic " << c.metallic << " theta "
+                               << c.thetaDeg << ": chi2 " << chi2 << " dof " << dof - 1;
+  }
+}
+
+}  // namespace
+}  // namespace lensrt
