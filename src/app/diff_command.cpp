@@ -1,11 +1,286 @@
-// Placeholder until the diff command lands; replaced by its owner.
+// `lensrt diff A B`: compare two images, idiff-style, optionally noise-aware.
+#include <fmt/core.h>
+
+#include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
 #include "app/command.h"
+#include "core/error.h"
+#include "image/heatmap.h"
+#include "image/image_diff.h"
+#include "image/image_io.h"
+#include "image/noise_aware_diff.h"
 
 namespace lensrt {
+namespace {
+
+// Exit statuses, as idiff's.
+constexpr int kExitPass = 0, kExitWarn = 1, kExitFail = 2, kExitIncomparable = 3, kExitUnreadable = 4;
+
+struct DiffOptions {
+  std::string fileA, fileB;
+  DiffThresholds thresholds;
+  std::string heatmap;
+  double heatmapMax = 0;
+  bool noiseAware = false;
+  NoiseAwareOptions noise;
+  int spp = 0;
+  bool json = false;
+};
+
+constexpr const char* kDescription =
+    "Compare two images (any format OpenImageIO reads) channel by channel.\n"
+    "Prints per channel and overall: max |A-B| and its pixel, mean |A-B|, RMSE,\n"
+    "PSNR (peak 1.0), mean relative error |A-B|/max((|A|+|B|)/2, floor), and the\n"
+    "pixels over the fail/warn thresholds. Thresholds and verdicts follow\n"
+    "OpenImageIO's idiff: a value fails when |A-B| > --fail AND\n"
+    "|A-B|/((|A|+|B|)/2) > --fail-relative; a pixel fails when any channel does;\n"
+    "the images FAIL when more than --fail-percent % of pixels fail or the max\n"
+    "error exceeds --hard-fail, else WARN by the --warn* rules, else PASS.\n"
+    "Channels are matched by name.\n"
+    "\n"
+    "--noise-aware (both images need variance.R/G/B, the variance of each\n"
+    "pixel's mean, from `lensrt render --aov variance`). Two tests, each at half\n"
+    "the image-level false-alarm rate --image-alpha; either failing FAILS:\n"
+    " count test: per pixel and channel t = |A-B| / sqrt(varA + varB +\n"
+    "   (floor*(|A|+|B|)/2)^2) against the two-sided Student-t quantile (nu =\n"
+    "   min spp - 1, spp from lensrt:spp metadata or --spp; normal if unknown)\n"
+    "   that fails an equivalent pixel with probability --pixel-alpha\n"
+    "   (Sidak-split over R,G,B); pixels with zero variance in both images use\n"
+    "   the --fail absolute threshold. Fails when the failing pixels exceed the\n"
+    "   k with P(Binomial(N, pixel-alpha) > k) <= image-alpha/2.\n"
+    " flux test: per channel z = sum(A-B) / sqrt(sum(varA+varB+floor^2)),\n"
+    "   normal for unbiased renders; fails when |z| exceeds the two-sided\n"
+    "   quantile at image-alpha/6 (catches small global changes such as a 2%\n"
+    "   gain that no single pixel shows).\n"
+    "Two renders with different seeds thus FAIL with probability at most\n"
+    "image-alpha (pixels assumed independent). Only R,G,B decide; the idiff\n"
+    "counts are reported, not applied (--hard-fail/--hard-warn still apply).\n"
+    "\n"
+    "Exit status: 0 identical or within thresholds, 1 warning, 2 failure (also\n"
+    "bad usage), 3 not comparable (size or channels differ), 4 unreadable file.";
+
+std::optional<int> sppFromMetadata(const ImageMetadata& metadata) {
+  const auto it = metadata.find("lensrt:spp");
+  if (it == metadata.end()) return std::nullopt;
+  try {
+    std::size_t used = 0;
+    const int spp = std::stoi(it->second, &used);
+    if (used == it->second.size() && spp > 0) return spp;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+nlohmann::json numberOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json statsJson(const DiffStats& s) {
+  return {{"channel", s.channel},
+          {"maxError", numberOrNull(s.maxError)},
+          {"maxPixel", {s.maxX, s.maxY}},
+          {"maxChannel", s.maxChannel},
+          {"meanError", numberOrNull(s.meanError)},
+          {"rmse", numberOrNull(s.rmse)},
+          {"psnr", numberOrNull(s.psnr)},
+          {"meanRelativeError", numberOrNull(s.meanRelativeError)},
+          {"failCount", s.failCount},
+          {"failPercent", s.failPercent},
+          {"warnCount", s.warnCount},
+          {"warnPercent", s.warnPercent}};
+}
+
+nlohmann::json noiseJson(const NoiseAwareReport& n, const NoiseAwareOptions& o) {
+  return {{"pixelFalseAlarmRate", o.pixelFalseAlarmRate},
+          {"imageFalseAlarmRate", o.imageFalseAlarmRate},
+          {"relativeFloor", o.relativeFloor},
+          {"degreesOfFreedom", n.degreesOfFreedom},
+          {"criticalValue", n.criticalValue},
+          {"testedPixels", n.testedPixels},
+          {"zeroVariancePixels", n.zeroVariancePixels},
+          {"zeroVarianceFailures", n.zeroVarianceFailures},
+          {"statisticalFailures", n.statisticalFailures},
+          {"failingPixels", n.failingPixels},
+          {"expectedFailures", n.expectedFailures},
+          {"allowedFailures", n.allowedFailures},
+          {"fluxZ", {numberOrNull(n.fluxZ[0]), numberOrNull(n.fluxZ[1]), numberOrNull(n.fluxZ[2])}},
+          {"fluxRelativeDifference",
+           {numberOrNull(n.fluxRelativeDifference[0]), numberOrNull(n.fluxRelativeDifference[1]),
+            numberOrNull(n.fluxRelativeDifference[2])}},
+          {"fluxCriticalValue", n.fluxCriticalValue},
+          {"maxT", numberOrNull(n.maxT)},
+          {"maxPixel", {n.maxX, n.maxY}},
+          {"maxChannel", n.maxChannel},
+          {"pass", n.pass}};
+}
+
+void printText(const DiffOptions& o, const DiffReport& r, const std::optional<NoiseAwareReport>& noise) {
+  fmt::print("Comparing \"{}\" and \"{}\" ({}x{}, {} channels)\n", o.fileA, o.fileB, r.width, r.height,
+             r.channels.size());
+  fmt::print("  {:<12} {:>11} {:>12} {:>11} {:>11} {:>8} {:>11} {:>10}\n", "channel", "max error",
+             "at (x, y)", "mean error", "RMSE", "PSNR dB", "mean rel", "over fail");
+  const auto row = [](const DiffStats& s) {
+    fmt::print("  {:<12} {:>11.4g} {:>12} {:>11.4g} {:>11.4g} {:>8.2f} {:>11.4g} {:>10}\n", s.channel,
+               s.maxError, fmt::format("({}, {})", s.maxX, s.maxY), s.meanError, s.rmse, s.psnr,
+               s.meanRelativeError, s.failCount);
+  };
+  for (const auto& s : r.channels) row(s);
+  row(r.overall);
+  const auto& all = r.overall;
+  fmt::print("  Max error = {:.6g} @ ({}, {}, {})\n", all.maxError, all.maxX, all.maxY, all.maxChannel);
+  fmt::print("  {} pixels ({:.3g}%) over warn {:g}\n", all.warnCount, all.warnPercent, o.thresholds.warn);
+  fmt::print("  {} pixels ({:.3g}%) over fail {:g}\n", all.failCount, all.failPercent, o.thresholds.fail);
+  if (noise) {
+    const auto& n = *noise;
+    fmt::print(
+        "  Noise-aware count test: |t| > {:.3f} ({}) fails a pixel; {} of {} pixels fail ({} by t, {} of {} "
+        "zero-variance by |A-B| > {:g}); expected {:.3g}, allowed {}; max |t| = {:.3g} @ ({}, {}, {})\n",
+        n.criticalValue, n.degreesOfFreedom > 0 ? fmt::format("t, nu = {:g}", n.degreesOfFreedom) : "normal",
+        n.failingPixels, n.testedPixels, n.statisticalFailures, n.zeroVarianceFailures, n.zeroVariancePixels,
+        o.noise.absoluteThreshold, n.expectedFailures, n.allowedFailures, n.maxT, n.maxX, n.maxY,
+        n.maxChannel);
+    fmt::print(
+        "  Noise-aware flux test: z(R,G,B) = {:.3g}, {:.3g}, {:.3g} (|z| > {:.3f} fails); relative flux "
+        "difference {:.3g}, {:.3g}, {:.3g}\n",
+        n.fluxZ[0], n.fluxZ[1], n.fluxZ[2], n.fluxCriticalValue, n.fluxRelativeDifference[0],
+        n.fluxRelativeDifference[1], n.fluxRelativeDifference[2]);
+    fmt::print("  Noise-aware: pixel alpha {:g}, image alpha {:g}: {}\n", o.noise.pixelFalseAlarmRate,
+               o.noise.imageFalseAlarmRate, n.pass ? "consistent with noise" : "NOT consistent with noise");
+  }
+}
+
+int runDiff(const DiffOptions& o) {
+  ImageMetadata metaA, metaB;
+  Image a, b;
+  try {
+    a = readImage(o.fileA, &metaA);
+    b = readImage(o.fileB, &metaB);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "lensrt: error: {}\n", e.what());
+    return kExitUnreadable;
+  }
+  if (const auto why = incomparableReason(a, b)) {
+    fmt::print(stderr, "lensrt: error: \"{}\" and \"{}\" are not comparable: {}\n", o.fileA, o.fileB, *why);
+    return kExitIncomparable;
+  }
+
+  const DiffReport report = diffImages(a, b, o.thresholds);
+  DiffVerdict verdict = report.verdict;
+  std::optional<NoiseAwareReport> noise;
+  if (o.noiseAware) {
+    if (!hasVarianceChannels(a) || !hasVarianceChannels(b)) {
+      fmt::print(stderr,
+                 "lensrt: error: \"{}\" and \"{}\" are not comparable noise-aware: both need R,G,B and "
+                 "variance.R/G/B channels (lensrt render --aov variance)\n",
+                 o.fileA, o.fileB);
+      return kExitIncomparable;
+    }
+    NoiseAwareOptions options = o.noise;
+    options.absoluteThreshold = o.thresholds.fail;
+    options.samplesA = o.spp > 0 ? o.spp : sppFromMetadata(metaA).value_or(0);
+    options.samplesB = o.spp > 0 ? o.spp : sppFromMetadata(metaB).value_or(0);
+    noise = noiseAwareDiff(a, b, options);
+    const double maxError = report.overall.maxError;
+    verdict = !noise->pass || maxError > o.thresholds.hardFail ? DiffVerdict::Fail
+              : maxError > o.thresholds.hardWarn               ? DiffVerdict::Warn
+                                                               : DiffVerdict::Pass;
+  }
+
+  if (!o.heatmap.empty()) {
+    HeatmapOptions options;
+    options.scaleMax = o.heatmapMax;
+    writeImage(o.heatmap, makeHeatmap(perPixelMaxError(a, b), a.width, a.height, options), {});
+  }
+
+  const int status = int(verdict);
+  if (o.json) {
+    nlohmann::json j{{"a", o.fileA},
+                     {"b", o.fileB},
+                     {"width", report.width},
+                     {"height", report.height},
+                     {"thresholds",
+                      {{"fail", o.thresholds.fail},
+                       {"failRelative", o.thresholds.failRelative},
+                       {"failPercent", o.thresholds.failPercent},
+                       {"hardFail", numberOrNull(o.thresholds.hardFail)},
+                       {"warn", o.thresholds.warn},
+                       {"warnRelative", o.thresholds.warnRelative},
+                       {"warnPercent", o.thresholds.warnPercent},
+                       {"hardWarn", numberOrNull(o.thresholds.hardWarn)},
+                       {"relativeFloor", o.thresholds.relativeFloor}}},
+                     {"channels", nlohmann::json::array()},
+                     {"overall", statsJson(report.overall)},
+                     {"noiseAware", noise ? noiseJson(*noise, o.noise) : nlohmann::json(nullptr)},
+                     {"verdict", verdictName(verdict)},
+                     {"exitStatus", status}};
+    for (const auto& s : report.channels) j["channels"].push_back(statsJson(s));
+    if (!o.heatmap.empty()) j["heatmap"] = o.heatmap;
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    printText(o, report, noise);
+    fmt::print("{}\n", verdictName(verdict));
+  }
+  return status;
+}
+
+}  // namespace
 
 CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
-  app.add_subcommand("diff", "(not built yet)");
-  return []() -> int { throw std::runtime_error("the diff command is not built yet"); };
+  CLI::App* sub =
+      app.add_subcommand("diff", "Compare two images; exit 0 pass, 1 warn, 2 fail, 3/4 see --help");
+  sub->description(kDescription);
+  auto o = std::make_shared<DiffOptions>();
+  auto& t = o->thresholds;
+  sub->add_option("A", o->fileA, "First image")->required();
+  sub->add_option("B", o->fileB, "Second image")->required();
+  const auto nonNegative = CLI::NonNegativeNumber;
+  sub->add_option("--fail", t.fail, "Failure threshold on |A-B|")->capture_default_str()->check(nonNegative);
+  sub->add_option("--fail-relative", t.failRelative, "Failure threshold on |A-B|/((|A|+|B|)/2)")
+      ->capture_default_str()
+      ->check(nonNegative);
+  sub->add_option("--fail-percent", t.failPercent, "Percentage of pixels allowed to fail")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 100.0));
+  sub->add_option("--hard-fail", t.hardFail, "Fail if any value's |A-B| exceeds this (default: inf)")
+      ->check(nonNegative);
+  sub->add_option("--warn", t.warn, "Warning threshold on |A-B|")->capture_default_str()->check(nonNegative);
+  sub->add_option("--warn-relative", t.warnRelative, "Warning threshold on |A-B|/((|A|+|B|)/2)")
+      ->capture_default_str()
+      ->check(nonNegative);
+  sub->add_option("--warn-percent", t.warnPercent, "Percentage of pixels allowed to warn")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 100.0));
+  sub->add_option("--hard-warn", t.hardWarn, "Warn if any value's |A-B| exceeds this (default: inf)")
+      ->check(nonNegative);
+  sub->add_option("--relative-floor", t.relativeFloor, "Floor of the mean relative error's denominator")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub->add_option(
+      "--heatmap", o->heatmap,
+      "Write a false-colour map of the per-pixel max |A-B| with a labelled colour bar (.png/.jpg/.exr)");
+  sub->add_option("--heatmap-max", o->heatmapMax,
+                  "Error at the top of the heatmap scale (default: the max error)")
+      ->check(nonNegative);
+  sub->add_flag("--noise-aware", o->noiseAware,
+                "Judge by per-pixel t-tests against the variance AOVs (see above)");
+  sub->add_option("--pixel-alpha", o->noise.pixelFalseAlarmRate, "Noise-aware: per-pixel false-alarm rate")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-12, 0.5));
+  sub->add_option("--image-alpha", o->noise.imageFalseAlarmRate, "Noise-aware: image-level false-alarm rate")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-12, 0.5));
+  sub->add_option("--variance-floor", o->noise.relativeFloor,
+                  "Noise-aware: standard-deviation floor as a fraction of the pixel value")
+      ->capture_default_str()
+      ->check(nonNegative);
+  sub->add_option("--spp", o->spp, "Noise-aware: samples per pixel of both (default: lensrt:spp metadata)")
+      ->check(CLI::PositiveNumber);
+  sub->add_flag("--json", o->json, "Print all figures as JSON");
+  return [o]() { return runDiff(*o); };
 }
 
 }  // namespace lensrt

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 namespace lensrt::test {
@@ -66,6 +68,36 @@ std::string shellQuote(const std::string& s) {
   std::string q = "'";
   for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+}
+
+}  // namespace lensrt::test
+
+namespace lensrt::test {
+
+double texturedTruth(int x, int y, int channel) {
+  const bool check = ((x / 4) + (y / 4)) % 2 == 1;
+  return 0.25 + (check ? 0.5 : 0.0) + 0.05 * channel + 0.1 * std::sin(0.37 * x + 0.21 * y);
+}
+
+Image noisyRender(int width, int height, unsigned seed, int spp, double sampleNoise, double gain,
+                  int shiftX) {
+  Image image(width, height, {"R", "G", "B", "variance.R", "variance.G", "variance.B"});
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  std::chi_squared_distribution<double> chiSquared(spp - 1);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double truth = texturedTruth(x + shiftX, y, c);
+        const double meanSigma = sampleNoise * truth / std::sqrt(double(spp));
+        // The sample mean and sample variance of normal samples are
+        // independent: a normal and a scaled chi-square with spp-1 degrees.
+        const double mean = truth + meanSigma * normal(rng);
+        const double variance = meanSigma * meanSigma * chiSquared(rng) / (spp - 1);
+        image.at(x, y, c) = float(gain * mean);
+        image.at(x, y, 3 + c) = float(gain * gain * variance);
+      }
+  return image;
 }
 
 }  // namespace lensrt::test

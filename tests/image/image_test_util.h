@@ -43,3 +43,19 @@ CommandResult runCommand(const std::string& command);
 std::string shellQuote(const std::string& s);
 
 }  // namespace lensrt::test
+
+namespace lensrt::test {
+
+// A textured ground truth in [0.2, 1]: 4-pixel checks plus a slow ripple,
+// slightly different per channel.
+double texturedTruth(int x, int y, int channel);
+
+// A synthetic render of texturedTruth with a variance AOV: each R,G,B value
+// is the mean of `spp` samples with relative standard deviation
+// `sampleNoise` (so the mean's deviation is sampleNoise*truth/sqrt(spp)),
+// and variance.R/G/B is the sample variance / spp, as a renderer writes it.
+// `gain` scales the whole render; `shiftX` samples the truth one column over.
+Image noisyRender(int width, int height, unsigned seed, int spp, double sampleNoise, double gain = 1.0,
+                  int shiftX = 0);
+
+}  // namespace lensrt::test

@@ -1,0 +1,91 @@
+#include "image/noise_aware_diff.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "image_test_util.h"
+
+namespace lensrt {
+namespace {
+
+using test::noisyRender;
+
+constexpr int kSize = 96;
+constexpr int kSpp = 64;
+constexpr double kSampleNoise = 0.25;  // per-sample; the 64-sample mean has 3% noise
+
+NoiseAwareOptions optionsFor(int spp) {
+  NoiseAwareOptions o;
+  o.samplesA = o.samplesB = spp;
+  return o;
+}
+
+TEST(NoiseAwareDiff, DifferentSeedsPass) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    const NoiseAwareReport r =
+        noiseAwareDiff(noisyRender(kSize, kSize, 2 * seed, kSpp, kSampleNoise),
+                       noisyRender(kSize, kSize, 2 * seed + 1, kSpp, kSampleNoise), optionsFor(kSpp));
+    EXPECT_TRUE(r.pass) << "seed " << seed << ": " << r.failingPixels << " failing, " << r.allowedFailures
+                        << " allowed; flux z " << r.fluxZ[0] << ", " << r.fluxZ[1] << ", " << r.fluxZ[2];
+    EXPECT_EQ(r.degreesOfFreedom, kSpp - 1);
+  }
+}
+
+TEST(NoiseAwareDiff, PixelFalseAlarmRateIsAsStated) {
+  // At alpha = 1% the count of failing pixels of equivalent renders is
+  // Binomial(9216, 0.01): mean 92, standard deviation 9.5.
+  NoiseAwareOptions o = optionsFor(kSpp);
+  o.pixelFalseAlarmRate = 0.01;
+  long long total = 0;
+  for (unsigned seed = 10; seed < 14; ++seed)
+    total += noiseAwareDiff(noisyRender(kSize, kSize, 2 * seed, kSpp, kSampleNoise),
+                            noisyRender(kSize, kSize, 2 * seed + 1, kSpp, kSampleNoise), o)
+                 .failingPixels;
+  const double expected = 4 * 0.01 * kSize * kSize, sd = std::sqrt(expected * 0.99);
+  EXPECT_NEAR(double(total), expected, 4 * sd);
+}
+
+TEST(NoiseAwareDiff, TwoPercentGainFails) {
+  const NoiseAwareReport r =
+      noiseAwareDiff(noisyRender(kSize, kSize, 1, kSpp, kSampleNoise),
+                     noisyRender(kSize, kSize, 2, kSpp, kSampleNoise, 1.02), optionsFor(kSpp));
+  EXPECT_FALSE(r.pass);
+  // The flux test sees it, with a relative flux difference of -2%.
+  EXPECT_GT(std::fabs(r.fluxZ[1]), r.fluxCriticalValue);
+  EXPECT_NEAR(r.fluxRelativeDifference[1], -0.02 / 1.01, 0.004);
+}
+
+TEST(NoiseAwareDiff, OnePixelShiftFails) {
+  const NoiseAwareReport r =
+      noiseAwareDiff(noisyRender(kSize, kSize, 1, kSpp, kSampleNoise),
+                     noisyRender(kSize, kSize, 2, kSpp, kSampleNoise, 1.0, 1), optionsFor(kSpp));
+  EXPECT_FALSE(r.pass);
+  // The check edges (one column in four) fail pixel by pixel.
+  EXPECT_GT(r.failingPixels, kSize * kSize / 8);
+}
+
+TEST(NoiseAwareDiff, ZeroVariancePixelsUseTheAbsoluteThreshold) {
+  Image a = noisyRender(8, 8, 1, kSpp, kSampleNoise);
+  for (int c = 3; c < 6; ++c) a.at(2, 2, c) = 0.0f;
+  Image b = a;
+  NoiseAwareOptions o = optionsFor(kSpp);
+  o.absoluteThreshold = 1e-3;
+  b.at(2, 2, 0) += 5e-4f;
+  NoiseAwareReport r = noiseAwareDiff(a, b, o);
+  EXPECT_EQ(r.zeroVariancePixels, 1);
+  EXPECT_EQ(r.zeroVarianceFailures, 0);
+  b.at(2, 2, 0) += 1e-3f;
+  r = noiseAwareDiff(a, b, o);
+  EXPECT_EQ(r.zeroVarianceFailures, 1);
+}
+
+TEST(NoiseAwareDiff, RequiresVarianceChannels) {
+  const Image plain = test::constantImage(4, 4, {"R", "G", "B"}, 0.5f);
+  EXPECT_FALSE(hasVarianceChannels(plain));
+  EXPECT_TRUE(hasVarianceChannels(noisyRender(4, 4, 1, 4, 0.1)));
+  EXPECT_THROW(noiseAwareDiff(plain, plain, {}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace lensrt
