@@ -33,6 +33,32 @@ std::vector<Vec2d> convexHull(std::vector<Vec2d> pts) {
   return hull;
 }
 
+// For a convex region, the boundary arc between consecutive boundary samples
+// B and C lies inside the triangle of the chord BC and the extensions of the
+// neighbouring chords AB and DC: adding each triangle's apex makes the hull
+// of the samples contain the whole region, corners included.
+std::vector<Vec2d> withApexes(const std::vector<Vec2d>& ring) {
+  const std::size_t n = ring.size();
+  std::vector<Vec2d> out = ring;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2d& a = ring[(k + n - 1) % n];
+    const Vec2d& b = ring[k];
+    const Vec2d& c = ring[(k + 1) % n];
+    const Vec2d& d = ring[(k + 2) % n];
+    const Vec2d u = b - a, v = c - d, w = c - b;
+    const double chord = std::hypot(w.x, w.y);
+    // Solve b + u s = c + v t.
+    const double den = u.x * v.y - u.y * v.x;
+    double s = den != 0.0 ? (w.x * v.y - w.y * v.x) / den : -1.0;
+    const double uLen = std::hypot(u.x, u.y);
+    // Nearly parallel neighbours (a straight edge) put the apex far away or
+    // behind: cap it at one chord length, which no smooth boundary reaches.
+    if (!(s >= 0.0) || s * uLen > chord) s = uLen > 0 ? chord / uLen : 0.0;
+    out.push_back(b + u * s);
+  }
+  return out;
+}
+
 // Traces for one film radius: the boundary of the passing region on the
 // pupil plane, as points just OUTSIDE it along rays from an interior point.
 class NodeSolver {
@@ -54,13 +80,30 @@ class NodeSolver {
     const double dRim = std::max(D - sagRim, 1e-3 * D);
     const double extent = 1.05 * (filmRadius + (a + filmRadius) * D / dRim) + 1e-3;
 
-    constexpr int kGrid = 32;
+    constexpr int kGrid = 24;
     std::vector<Vec2d> inside;
     for (int j = 0; j < kGrid; ++j)
       for (int i = 0; i < kGrid; ++i) {
         const Vec2d q{-extent + 2 * extent * (i + 0.5) / kGrid, -extent + 2 * extent * (j + 0.5) / kGrid};
         if (passes(filmRadius, q)) inside.push_back(q);
       }
+    // A finer grid around the paraxial chief ray (aimed at the exit pupil's
+    // centre) finds small regions the coarse grid steps over: a stopped-down
+    // lens, or the edge of the image circle.
+    const ParaxialData& p = lens_.paraxial();
+    const double toPupil = filmZ_ - p.exitPupilZ;
+    if (toPupil > 1e-6 * D) {
+      const double scale = D / toPupil;
+      const Vec2d chief{filmRadius - filmRadius * scale, 0.0};
+      const double half = std::min(extent, 0.6 * p.exitPupilDiameter * scale);
+      constexpr int kFine = 12;
+      for (int j = 0; j < kFine; ++j)
+        for (int i = 0; i < kFine; ++i) {
+          const Vec2d q{chief.x - half + 2 * half * (i + 0.5) / kFine,
+                        chief.y - half + 2 * half * (j + 0.5) / kFine};
+          if (passes(filmRadius, q)) inside.push_back(q);
+        }
+    }
     if (inside.empty()) return {};
     Vec2d c{0, 0};
     for (const Vec2d& q : inside) c = c + q;
@@ -74,25 +117,28 @@ class NodeSolver {
     }
     // March out from c in each direction, keeping the LAST passing step (so a
     // gap in a non-convex region is not taken for its edge), then bisect.
-    constexpr int kDirections = 72;
-    const double step = extent / 12.0;
+    constexpr int kDirections = 48;
+    const double step = extent / 8.0;
     std::vector<Vec2d> edge;
     edge.reserve(kDirections);
     for (int k = 0; k < kDirections; ++k) {
       const double theta = 2.0 * kPi * k / kDirections;
       const Vec2d dir{std::cos(theta), std::sin(theta)};
-      const double tMax = 3.0 * extent;
+      // Every passing point lies in the square: march only to its edge.
+      const double tx = dir.x != 0 ? ((dir.x > 0 ? extent : -extent) - c.x) / dir.x : kInfinity;
+      const double ty = dir.y != 0 ? ((dir.y > 0 ? extent : -extent) - c.y) / dir.y : kInfinity;
+      const double tMax = std::min(tx, ty);
       double lastIn = 0.0;
       for (double t = step; t <= tMax; t += step)
         if (passes(filmRadius, c + dir * t)) lastIn = t;
       double lo = lastIn, hi = lastIn + step;
-      for (int it = 0; it < 16; ++it) {
+      for (int it = 0; it < 12; ++it) {
         const double mid = 0.5 * (lo + hi);
         (passes(filmRadius, c + dir * mid) ? lo : hi) = mid;
       }
       edge.push_back(c + dir * hi);
     }
-    return edge;
+    return withApexes(edge);
   }
 
  private:
@@ -133,15 +179,15 @@ ExitPupilBounds::ExitPupilBounds(const LensSystem& lens, double filmZ, double ma
       pts.insert(pts.end(), boundaries[k].begin(), boundaries[k].end());
     std::vector<Vec2d> hull = convexHull(pts);
     if (hull.size() < 3) continue;
-    // Dilate about the vertex mean: 1% of the size plus a micrometre, to
-    // cover the edge between boundary samples and sub-node variation.
+    // Dilate about the vertex mean by 0.5% plus a micrometre, for the
+    // variation between nodes and the bisection's tolerance.
     Vec2d g{0, 0};
     for (const Vec2d& v : hull) g = g + v;
     g = g / static_cast<double>(hull.size());
     for (Vec2d& v : hull) {
       const Vec2d r = v - g;
       const double len = std::hypot(r.x, r.y);
-      if (len > 0) v = g + r * (1.01 + 1e-3 / len);
+      if (len > 0) v = g + r * (1.005 + 1e-3 / len);
     }
     Polygon& poly = polygons_[i];
     poly.vertices = std::move(hull);

@@ -1,0 +1,188 @@
+// Exact tracing against Snell's law, reversibility and the focus condition.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/warnings.h"
+#include "optics/focus.h"
+#include "optics/lens_system.h"
+#include "optics/sample_sequence.h"
+#include "optics_test_util.h"
+
+namespace lensrt {
+namespace {
+
+TEST(Tracing, RefractionObeysSnellsLaw) {
+  const Vec3d n{0, 0, -1};  // facing a ray travelling +z
+  for (const double deg : {0.0, 10.0, 30.0, 60.0}) {
+    const double a = deg * kPi / 180;
+    const Vec3d d{std::sin(a), 0, std::cos(a)};
+    Vec3d out;
+    ASSERT_TRUE(refract(d, n, 1.0, 1.5, out));
+    EXPECT_NEAR(1.0 * std::sin(a), 1.5 * out.x, 1e-12);  // n1 sin t1 = n2 sin t2
+    EXPECT_NEAR(length(out), 1.0, 1e-12);
+  }
+  // Beyond the critical angle, glass to air reflects totally.
+  const double a = std::asin(1 / 1.5) + 0.01;
+  Vec3d out;
+  EXPECT_FALSE(refract({std::sin(a), 0, std::cos(a)}, n, 1.5, 1.0, out));
+}
+
+TEST(Tracing, AxialRayPassesUndeviated) {
+  const LensSystem lens(test::libraryLens("dgauss-50mm"));
+  const auto out = lens.traceFromScene({{0, 0, -100}, {0, 0, 1}});
+  ASSERT_TRUE(out);
+  EXPECT_NEAR(out->origin.z, lens.rearZ(), 1e-12);
+  EXPECT_NEAR(out->direction.x, 0, 1e-15);
+  EXPECT_NEAR(out->direction.z, 1, 1e-15);
+}
+
+TEST(Tracing, ParallelNearAxisRaysFocusAtTheBackFocalLength) {
+  const LensSystem lens(test::libraryLens("dgauss-100mm"));
+  const auto out = lens.traceFromScene({{0.01, 0, -10}, {0, 0, 1}});
+  ASSERT_TRUE(out);
+  const double crossing = out->origin.z - out->origin.x * out->direction.z / out->direction.x;
+  EXPECT_NEAR(crossing - lens.rearZ(), lens.paraxial().bfl, 1e-4);
+  EXPECT_NEAR(crossing - lens.rearZ(), 72.2, 0.1);
+}
+
+// Optical paths are reversible: a ray traced from the scene, sent back from
+// where it left, retraces its path out of the front of the lens.
+TEST(Tracing, FilmAndSceneTracesAreInverse) {
+  const LensSystem lens(test::libraryLens("dgauss-100mm"));
+  SplitMix64 rng(3);
+  int checked = 0;
+  for (int i = 0; i < 6000; ++i) {
+    const Vec3d origin{(rng.uniform() - 0.5) * 40, (rng.uniform() - 0.5) * 40, -30};
+    const Vec3d target{(rng.uniform() - 0.5) * 40, (rng.uniform() - 0.5) * 40, 0};
+    const LensRay in{origin, normalize(target - origin)};
+    for (const double wavelength : {kWavelengthDNm, 450.0}) {
+      const auto out = lens.traceFromScene(in, wavelength);
+      if (!out) continue;
+      const auto back = lens.traceFromFilm({out->origin, -out->direction}, wavelength);
+      ASSERT_TRUE(back);
+      EXPECT_NEAR(dot(back->direction, -in.direction), 1.0, 1e-12);
+      // The returning ray lies on the incoming line.
+      const Vec3d off = back->origin - origin;
+      EXPECT_NEAR(length(off - in.direction * dot(off, in.direction)), 0.0, 1e-9);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 500);
+}
+
+TEST(Tracing, DispersionBendsBlueMoreThanRed) {
+  // A singlet of crown glass: shorter focal length in blue (n_F > n_C), and
+  // the difference is the Abbe number's definition: (n_F - n_C) = (n_d - 1)/V_d.
+  LensPrescription rx = test::singlet(100.0, -100.0, 4.0, 1.5168);
+  rx.surfaces[1].medium.vd = 64.17;
+  const LensSystem lens(rx);
+  const auto focus = [&](double wl) {
+    const auto out = lens.traceFromScene({{0.01, 0, -10}, {0, 0, 1}}, wl);
+    return out->origin.z - out->origin.x * out->direction.z / out->direction.x;
+  };
+  EXPECT_LT(focus(kWavelengthFNm), focus(kWavelengthDNm));
+  EXPECT_LT(focus(kWavelengthDNm), focus(kWavelengthCNm));
+  const Dispersion glass = Dispersion::of(rx.surfaces[1].medium);
+  EXPECT_NEAR(glass.index(kWavelengthDNm), 1.5168, 1e-12);
+  EXPECT_NEAR(glass.index(kWavelengthFNm) - glass.index(kWavelengthCNm), 0.5168 / 64.17, 1e-12);
+}
+
+// Near-axis rays from an on-axis point at the focus distance meet on the film.
+TEST(Focus, RaysFromTheFocusDistanceMeetOnTheFilm) {
+  for (const char* name : {"dgauss-50mm", "dgauss-100mm", "tessar-100mm", "telephoto-250mm"}) {
+    SCOPED_TRACE(name);
+    const LensSystem lens(test::libraryLens(name));
+    const ParaxialData& p = lens.paraxial();
+    for (const double distance : {700.0, 2000.0, 10000.0}) {
+      const double film = focusFilmDistance(lens, distance);
+      const double filmZ = lens.rearZ() + film;
+      const Vec3d object{0, 0, p.entrancePupilZ - distance};
+      double worst = 0;
+      for (int i = 1; i <= 8; ++i) {
+        const double h = 0.2 * p.entrancePupilDiameter / 2 * i / 8;  // the central fifth of the pupil
+        const double phi = 0.7 * i;
+        const Vec3d target{h * std::cos(phi), h * std::sin(phi), p.entrancePupilZ};
+        const auto out = lens.traceFromScene({object, target - object});
+        ASSERT_TRUE(out);
+        const double t = (filmZ - out->origin.z) / out->direction.z;
+        const Vec3d hit = out->origin + out->direction * t;
+        worst = std::max(worst, std::hypot(hit.x, hit.y));
+      }
+      EXPECT_LT(worst, 0.004) << "at " << distance << " mm: spread " << worst * 1000 << " um";
+    }
+  }
+}
+
+TEST(Focus, InfinityFocusIsTheBackFocalLength) {
+  const LensSystem lens(test::libraryLens("dgauss-100mm"));
+  EXPECT_NEAR(focusFilmDistance(lens, kInfinity), lens.paraxial().bfl, 1e-6);
+  // Closer objects need more extension (the image moves away from the lens).
+  EXPECT_GT(focusFilmDistance(lens, 1000.0), focusFilmDistance(lens, 5000.0));
+}
+
+TEST(Focus, CloserThanTheLensCanFocusIsAnError) {
+  const LensSystem lens(test::libraryLens("dgauss-50mm"));
+  try {
+    focusFilmDistance(lens, 30.0);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("closer than the lens can focus"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(focusFilmDistance(lens, -1.0), InputError);
+}
+
+TEST(StopDown, ReachesTheRequestedFNumber) {
+  const LensPrescription rx = test::libraryLens("dgauss-50mm");
+  Warnings warnings;
+  for (const double n : {2.8, 4.0, 8.0, 16.0}) {
+    const LensSystem lens(stopDown(rx, n, warnings));
+    EXPECT_NEAR(lens.paraxial().fNumber, n, 1e-9);
+    EXPECT_NEAR(lens.paraxial().efl, 50.358, 0.01);  // the focal length does not change
+  }
+  EXPECT_TRUE(warnings.all().empty());
+  // Wider than the design: clamped to its widest, with a warning.
+  const LensSystem wide(stopDown(rx, 1.0, warnings));
+  EXPECT_NEAR(wide.paraxial().fNumber, computeParaxial(rx).fNumber, 1e-12);
+  ASSERT_EQ(warnings.all().size(), 1u);
+  EXPECT_NE(warnings.all().begin()->find("wider than the lens allows"), std::string::npos);
+  EXPECT_THROW(stopDown(rx, 0.0, warnings), InputError);
+}
+
+// Random film->scene rays, sane or not, through every library lens at several
+// f-numbers: each passes with finite unit output or is blocked; never NaN.
+TEST(Tracing, NoNaNForAnyRay) {
+  SplitMix64 rng(11);
+  long passed = 0, total = 0;
+  for (const auto& file : listLenses(test::lensDir())) {
+    const LensPrescription rx = loadLens(file);
+    for (const double n : {0.0, 4.0, 16.0}) {
+      Warnings warnings;
+      const LensSystem lens(n > 0 ? stopDown(rx, n, warnings) : rx);
+      const double filmZ = lens.rearZ() + std::max(1.0, rx.surfaces.back().thickness);
+      const double r = lens.rearApertureRadius();
+      for (int i = 0; i < 26000; ++i) {
+        const Vec3d o{(rng.uniform() - 0.5) * 60, (rng.uniform() - 0.5) * 60, filmZ};
+        Vec3d d{(rng.uniform() - 0.5) * 3 * r, (rng.uniform() - 0.5) * 3 * r, lens.rearZ() - filmZ};
+        if (i % 97 == 0)
+          d = {rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5};  // any direction
+        if (i % 1001 == 0) d = {0, 0, 0};
+        const auto out =
+            lens.traceFromFilm({o, d}, i % 3 == 0 ? 400.0 + 300.0 * rng.uniform() : kWavelengthDNm);
+        ++total;
+        if (!out) continue;
+        ++passed;
+        ASSERT_TRUE(isFinite(out->origin) && isFinite(out->direction)) << file;
+        ASSERT_NEAR(length(out->direction), 1.0, 1e-9);
+        ASSERT_LT(out->direction.z, 0.0);
+      }
+    }
+  }
+  EXPECT_GT(total, 1'000'000);
+  EXPECT_GT(passed, total / 50);  // the test exercises real passes too
+}
+
+}  // namespace
+}  // namespace lensrt

@@ -1,0 +1,72 @@
+// Optics figures that must not live in unit tests because they are timings:
+// exit pupil bounds construction time (target < 0.2 s on 2 cores for an
+// 11-surface lens), their efficiency (share of sampled rays that pass;
+// target >= 90% for dgauss-50mm at f/2 over 36x24 mm, pbrt-v4's boxes ~72%),
+// and exact tracing throughput.
+//   bench_optics [lens names...]   (default: the whole library)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/constants.h"
+#include "core/warnings.h"
+#include "optics/exit_pupil.h"
+#include "optics/focus.h"
+#include "optics/lens_readers.h"
+#include "optics/sample_sequence.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+void bench(const lensrt::LensPrescription& design, double fNumber) {
+  lensrt::Warnings warnings;
+  const lensrt::LensSystem lens(fNumber > 0 ? lensrt::stopDown(design, fNumber, warnings) : design);
+  const double film = lensrt::focusFilmDistance(lens, lensrt::kInfinity);
+  const double halfDiagonal = std::hypot(36.0, 24.0) / 2.0;
+  std::vector<double> times;
+  for (int i = 0; i < 5; ++i) {
+    const auto t0 = Clock::now();
+    const lensrt::ExitPupilBounds bounds(lens, lens.rearZ() + film, halfDiagonal);
+    times.push_back(seconds(t0, Clock::now()));
+  }
+  std::sort(times.begin(), times.end());
+  const lensrt::ExitPupilBounds bounds(lens, lens.rearZ() + film, halfDiagonal);
+  const auto eff = lensrt::measurePupilEfficiency(lens, bounds, 36.0, 24.0, 200000);
+  // Tracing throughput: rays from film points toward the rear element.
+  lensrt::SplitMix64 rng(7);
+  const int n = 1000000;
+  int passed = 0;
+  const auto t0 = Clock::now();
+  for (int i = 0; i < n; ++i) {
+    const lensrt::Vec3d o{(rng.uniform() - 0.5) * 36, (rng.uniform() - 0.5) * 24, lens.rearZ() + film};
+    const double r = lens.rearApertureRadius();
+    const lensrt::Vec3d p{(rng.uniform() - 0.5) * 2 * r, (rng.uniform() - 0.5) * 2 * r, lens.rearZ()};
+    passed += lens.traceFromFilm({o, p - o}).has_value();
+  }
+  const double traceS = seconds(t0, Clock::now());
+  std::printf(
+      "%-24s f/%-5.3g surfaces %2d  bounds build %6.1f ms (median of 5)  efficiency %5.1f%%  "
+      "(%ld film samples outside the image circle)  trace %5.1f ns/ray (%4.1f%% pass)\n",
+      design.name.c_str(), lens.paraxial().fNumber, lens.surfaceCount(), 1e3 * times[2],
+      100.0 * eff.efficiency(), eff.empty, 1e9 * traceS / n, 100.0 * passed / n);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> names(argv + 1, argv + argc);
+  if (names.empty())
+    for (const auto& p : lensrt::listLenses(LENSRT_LENS_DIR)) names.push_back(p.stem().string());
+  for (const std::string& name : names) {
+    const auto design = lensrt::loadLens(lensrt::findLens(name, LENSRT_LENS_DIR));
+    bench(design, 0.0);
+    if (name == "dgauss-50mm") bench(design, 2.0), bench(design, 2.8), bench(design, 8.0);
+  }
+  return 0;
+}
