@@ -1,0 +1,41 @@
+// Runs the built `lensrt` binary as a child process and captures its output.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lensrt::cli {
+
+struct RunResult {
+  int status = -1;  // exit status, or 128 + signal number
+  std::string out;
+  std::string err;
+};
+
+RunResult runLensrt(const std::vector<std::string>& args);
+
+// A fresh empty directory for the current test, removed by the destructor.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string readFile(const std::filesystem::path& file);
+void writeFile(const std::filesystem::path& file, const std::string& contents);
+std::vector<std::string> lines(const std::string& text);
+
+// A one-triangle glTF with its buffer as a data URI. `bufferBytes` < 44 cuts
+// the buffer short.
+std::string triangleGltf(const float (&positions)[9], const unsigned short (&indices)[3],
+                         int bufferBytes = 44);
+
+}  // namespace lensrt::cli
