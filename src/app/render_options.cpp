@@ -30,21 +30,26 @@ std::optional<float> parseFloat(const std::string& s) {
 
 constexpr int kMaxDimension = 65536;
 
+// CLI11 prefixes a check's message with the option name itself.
+std::string withoutPrefix(const std::string& s, const std::string& prefix) {
+  return s.rfind(prefix, 0) == 0 ? s.substr(prefix.size()) : s;
+}
+
 }  // namespace
 
 std::string checkResolution(const std::string& text) {
   const std::size_t x = text.find_first_of("xX");
   const std::optional<int> w = parseInt(text.substr(0, x));
   const std::optional<int> h = x == std::string::npos ? std::optional<int>(0) : parseInt(text.substr(x + 1));
-  if (!w || !h) return "--res: expected WIDTHxHEIGHT in pixels (e.g. 640x360) or WIDTH, got '" + text + "'";
+  if (!w || !h) return "expected WIDTHxHEIGHT in pixels (e.g. 640x360) or WIDTH, got '" + text + "'";
   if (*w < 1 || *w > kMaxDimension || (x != std::string::npos && (*h < 1 || *h > kMaxDimension)))
-    return "--res: width and height must be between 1 and " + std::to_string(kMaxDimension) +
+    return "width and height must be between 1 and " + std::to_string(kMaxDimension) +
            " pixels, got '" + text + "'";
   return "";
 }
 
 Resolution parseResolution(const std::string& text) {
-  if (const std::string why = checkResolution(text); !why.empty()) throw CLI::ValidationError(why);
+  if (const std::string why = checkResolution(text); !why.empty()) throw CLI::ValidationError("--res: " + why);
   const std::size_t x = text.find_first_of("xX");
   return {*parseInt(text.substr(0, x)), x == std::string::npos ? 0 : *parseInt(text.substr(x + 1))};
 }
@@ -54,7 +59,7 @@ std::string checkEnvironment(const std::string& text) {
     parseEnvironment(text);
     return "";
   } catch (const CLI::ValidationError& e) {
-    return e.what();
+    return withoutPrefix(e.what(), "--env: ");
   }
 }
 
