@@ -121,12 +121,12 @@ nlohmann::json noiseJson(const NoiseAwareReport& n, const NoiseAwareOptions& o) 
 void printText(const DiffOptions& o, const DiffReport& r, const std::optional<NoiseAwareReport>& noise) {
   fmt::print("Comparing \"{}\" and \"{}\" ({}x{}, {} channels)\n", o.fileA, o.fileB, r.width, r.height,
              r.channels.size());
-  fmt::print("  {:<12} {:>11} {:>12} {:>11} {:>11} {:>8} {:>11} {:>10}\n", "channel", "max error",
-             "at (x, y)", "mean error", "RMSE", "PSNR dB", "mean rel", "over fail");
+  fmt::print("  {:<12} {:>11} {:>12} {:>11} {:>11} {:>8} {:>11} {:>16}\n", "channel", "max error",
+             "at (x, y)", "mean error", "RMSE", "PSNR dB", "mean rel", "over fail (%)");
   const auto row = [](const DiffStats& s) {
-    fmt::print("  {:<12} {:>11.4g} {:>12} {:>11.4g} {:>11.4g} {:>8.2f} {:>11.4g} {:>10}\n", s.channel,
+    fmt::print("  {:<12} {:>11.4g} {:>12} {:>11.4g} {:>11.4g} {:>8.2f} {:>11.4g} {:>16}\n", s.channel,
                s.maxError, fmt::format("({}, {})", s.maxX, s.maxY), s.meanError, s.rmse, s.psnr,
-               s.meanRelativeError, s.failCount);
+               s.meanRelativeError, fmt::format("{} ({:.3g}%)", s.failCount, s.failPercent));
   };
   for (const auto& s : r.channels) row(s);
   row(r.overall);
@@ -171,6 +171,7 @@ int runDiff(const DiffOptions& o) {
   const DiffReport report = diffImages(a, b, o.thresholds);
   DiffVerdict verdict = report.verdict;
   std::optional<NoiseAwareReport> noise;
+  NoiseAwareOptions noiseOptions;
   if (o.noiseAware) {
     if (!hasVarianceChannels(a) || !hasVarianceChannels(b)) {
       fmt::print(stderr,
@@ -179,11 +180,11 @@ int runDiff(const DiffOptions& o) {
                  o.fileA, o.fileB);
       return kExitIncomparable;
     }
-    NoiseAwareOptions options = o.noise;
-    options.absoluteThreshold = o.thresholds.fail;
-    options.samplesA = o.spp > 0 ? o.spp : sppFromMetadata(metaA).value_or(0);
-    options.samplesB = o.spp > 0 ? o.spp : sppFromMetadata(metaB).value_or(0);
-    noise = noiseAwareDiff(a, b, options);
+    noiseOptions = o.noise;
+    noiseOptions.absoluteThreshold = o.thresholds.fail;
+    noiseOptions.samplesA = o.spp > 0 ? o.spp : sppFromMetadata(metaA).value_or(0);
+    noiseOptions.samplesB = o.spp > 0 ? o.spp : sppFromMetadata(metaB).value_or(0);
+    noise = noiseAwareDiff(a, b, noiseOptions);
     const double maxError = report.overall.maxError;
     verdict = !noise->pass || maxError > o.thresholds.hardFail ? DiffVerdict::Fail
               : maxError > o.thresholds.hardWarn               ? DiffVerdict::Warn
@@ -191,9 +192,13 @@ int runDiff(const DiffOptions& o) {
   }
 
   if (!o.heatmap.empty()) {
+    // Noise-aware, the map shows |t| with the pixel threshold mid-scale, so
+    // failing pixels are the green-to-yellow half.
     HeatmapOptions options;
-    options.scaleMax = o.heatmapMax;
-    writeImage(o.heatmap, makeHeatmap(perPixelMaxError(a, b), a.width, a.height, options), {});
+    options.scaleMax = o.heatmapMax > 0 ? o.heatmapMax : noise ? 2 * noise->criticalValue : 0.0;
+    if (noise) options.title = fmt::format("|t|, fail > {:.3g}", noise->criticalValue);
+    const std::vector<float> values = noise ? perPixelMaxT(a, b, noiseOptions) : perPixelMaxError(a, b);
+    writeImage(o.heatmap, makeHeatmap(values, a.width, a.height, options), {});
   }
 
   const int status = int(verdict);
@@ -261,9 +266,11 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
       ->check(CLI::PositiveNumber);
   sub->add_option(
       "--heatmap", o->heatmap,
-      "Write a false-colour map of the per-pixel max |A-B| with a labelled colour bar (.png/.jpg/.exr)");
+      "Write a false-colour map of the per-pixel max |A-B| (noise-aware: max |t|) with a labelled "
+      "colour bar (.png/.jpg/.exr)");
   sub->add_option("--heatmap-max", o->heatmapMax,
-                  "Error at the top of the heatmap scale (default: the max error)")
+                  "Value at the top of the heatmap scale (default: the max error; noise-aware: twice the |t| "
+                  "threshold)")
       ->check(nonNegative);
   sub->add_flag("--noise-aware", o->noiseAware,
                 "Judge by per-pixel t-tests against the variance AOVs (see above)");

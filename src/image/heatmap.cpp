@@ -65,8 +65,10 @@ Image makeHeatmap(const std::vector<float>& error, int width, int height, const 
   int labelWidth = 0;
   for (const auto& l : labels) labelWidth = std::max(labelWidth, textWidth(l, style));
   const int margin = 8, barWidth = 16;
-  const int panelWidth = margin + barWidth + 6 + labelWidth + margin;
-  const int canvasHeight = std::max(height, 96);
+  const int panelWidth =
+      margin + std::max(barWidth + 6 + labelWidth, textWidth(options.title, style)) + margin;
+  const int titleHeight = options.title.empty() ? 0 : style.size + 6;
+  const int canvasHeight = std::max(height, 96 + titleHeight);
 
   Image out(width + panelWidth, canvasHeight, {"R", "G", "B"});
   fill(out, 0, 0, out.width, out.height, kBackground);
@@ -77,7 +79,9 @@ Image makeHeatmap(const std::vector<float>& error, int width, int height, const 
     }
 
   // The bar runs from the top label's centre (max) down to the bottom one (0).
-  const int barTop = margin + style.size / 2, barBottom = canvasHeight - margin - style.size / 2;
+  if (!options.title.empty()) drawText(out, width + margin, margin / 2, options.title, style);
+  const int barTop = titleHeight + margin + style.size / 2,
+            barBottom = canvasHeight - margin - style.size / 2;
   const int barX = width + margin;
   const int barRows = std::max(1, barBottom - barTop);
   std::vector<float> ramp(barRows);

@@ -31,12 +31,51 @@ bool hasVarianceChannels(const Image& image) {
   return std::all_of(index.begin(), index.end(), [](int i) { return i >= 0; });
 }
 
-NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAwareOptions& o) {
+namespace {
+
+void checkInputs(const Image& a, const Image& b, const NoiseAwareOptions& o) {
   if (a.width != b.width || a.height != b.height || !hasVarianceChannels(a) || !hasVarianceChannels(b))
     throw std::invalid_argument("noiseAwareDiff: needs same-size images with R,G,B and variance.R/G/B");
   if (!(o.pixelFalseAlarmRate > 0 && o.pixelFalseAlarmRate < 1 && o.imageFalseAlarmRate > 0 &&
         o.imageFalseAlarmRate < 1))
     throw std::invalid_argument("noiseAwareDiff: false-alarm rates must be in (0,1)");
+}
+
+// One pixel's figures: for R,G,B the signed difference, the variance of
+// the difference (with the floor) and |t|.
+struct PixelTest {
+  bool zeroVariance = true;        // variance.R/G/B zero in both images
+  bool zeroVarianceFails = false;  // then: some |A-B| over the absolute threshold (or NaN)
+  std::array<double, 3> difference{}, variance{}, mean{}, t{};
+};
+
+PixelTest testPixel(const Image& a, const Image& b, const std::array<int, 6>& ia,
+                    const std::array<int, 6>& ib, int x, int y, const NoiseAwareOptions& o) {
+  PixelTest p;
+  for (int c = 0; c < 3; ++c)
+    p.zeroVariance = p.zeroVariance && a.at(x, y, ia[3 + c]) == 0.0f && b.at(x, y, ib[3 + c]) == 0.0f;
+  for (int c = 0; c < 3; ++c) {
+    const double va = a.at(x, y, ia[c]), vb = b.at(x, y, ib[c]);
+    const double diff = std::fabs(va - vb);
+    p.difference[c] = va - vb;
+    p.mean[c] = 0.5 * (std::fabs(va) + std::fabs(vb));
+    if (p.zeroVariance) {
+      p.zeroVarianceFails = p.zeroVarianceFails || !(diff <= o.absoluteThreshold);  // NaN fails
+      continue;
+    }
+    const double floorSigma = o.relativeFloor * p.mean[c];
+    p.variance[c] = std::max(0.0, double(a.at(x, y, ia[3 + c]))) +
+                    std::max(0.0, double(b.at(x, y, ib[3 + c]))) + floorSigma * floorSigma;
+    const double t = p.variance[c] > 0 ? diff / std::sqrt(p.variance[c]) : (diff > 0 ? kInf : 0.0);
+    p.t[c] = std::isnan(t) ? kInf : t;
+  }
+  return p;
+}
+
+}  // namespace
+
+NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAwareOptions& o) {
+  checkInputs(a, b, o);
   const auto ia = colourAndVarianceChannels(a), ib = colourAndVarianceChannels(b);
 
   NoiseAwareReport r;
@@ -50,35 +89,21 @@ NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAware
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
       ++r.testedPixels;
-      bool zeroVariance = true;
-      for (int c = 0; c < 3; ++c)
-        zeroVariance = zeroVariance && a.at(x, y, ia[3 + c]) == 0.0f && b.at(x, y, ib[3 + c]) == 0.0f;
+      const PixelTest p = testPixel(a, b, ia, ib, x, y, o);
+      if (p.zeroVariance) {
+        ++r.zeroVariancePixels;
+        r.zeroVarianceFailures += p.zeroVarianceFails;
+        continue;
+      }
       bool fails = false;
       for (int c = 0; c < 3; ++c) {
-        const double va = a.at(x, y, ia[c]), vb = b.at(x, y, ib[c]);
-        const double diff = std::fabs(va - vb);
-        if (zeroVariance) {
-          fails = fails || !(diff <= o.absoluteThreshold);  // NaN fails
-          continue;
-        }
-        const double mean = 0.5 * (std::fabs(va) + std::fabs(vb));
-        const double floorSigma = o.relativeFloor * mean;
-        const double variance = std::max(0.0, double(a.at(x, y, ia[3 + c]))) +
-                                std::max(0.0, double(b.at(x, y, ib[3 + c]))) + floorSigma * floorSigma;
-        fluxDifference[c] += va - vb;
-        fluxVariance[c] += variance;
-        fluxTotal[c] += mean;
-        const double t = variance > 0 ? diff / std::sqrt(variance) : (diff > 0 ? kInf : 0.0);
-        const double tOrInf = std::isnan(t) ? kInf : t;
-        if (tOrInf > r.maxT) r.maxT = tOrInf, r.maxX = x, r.maxY = y, r.maxChannel = kColour[c];
-        fails = fails || tOrInf > r.criticalValue;
+        fluxDifference[c] += p.difference[c];
+        fluxVariance[c] += p.variance[c];
+        fluxTotal[c] += p.mean[c];
+        if (p.t[c] > r.maxT) r.maxT = p.t[c], r.maxX = x, r.maxY = y, r.maxChannel = kColour[c];
+        fails = fails || p.t[c] > r.criticalValue;
       }
-      if (zeroVariance) {
-        ++r.zeroVariancePixels;
-        r.zeroVarianceFailures += fails;
-      } else {
-        r.statisticalFailures += fails;
-      }
+      r.statisticalFailures += fails;
     }
   r.failingPixels = r.zeroVarianceFailures + r.statisticalFailures;
   const long long statisticalPixels = r.testedPixels - r.zeroVariancePixels;
@@ -99,6 +124,19 @@ NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAware
   }
   r.pass = countPasses && fluxPasses;
   return r;
+}
+
+std::vector<float> perPixelMaxT(const Image& a, const Image& b, const NoiseAwareOptions& o) {
+  checkInputs(a, b, o);
+  const auto ia = colourAndVarianceChannels(a), ib = colourAndVarianceChannels(b);
+  std::vector<float> maxT(std::size_t(a.width) * a.height);
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const PixelTest p = testPixel(a, b, ia, ib, x, y, o);
+      maxT[std::size_t(y) * a.width + x] = p.zeroVariance ? (p.zeroVarianceFails ? float(kInf) : 0.0f)
+                                                          : float(std::max({p.t[0], p.t[1], p.t[2]}));
+    }
+  return maxT;
 }
 
 }  // namespace lensrt

@@ -35,6 +35,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 
@@ -73,5 +74,10 @@ bool hasVarianceChannels(const Image& image);
 // Requires same-size images with R,G,B and variance.R/G/B (throws
 // std::invalid_argument otherwise).
 NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAwareOptions& options);
+
+// Per-pixel largest |t| over R,G,B (row-major; +inf where a zero-variance
+// pixel exceeds the absolute threshold, 0 where it does not): the input of
+// a noise-aware heatmap. Same requirements as noiseAwareDiff.
+std::vector<float> perPixelMaxT(const Image& a, const Image& b, const NoiseAwareOptions& options);
 
 }  // namespace lensrt

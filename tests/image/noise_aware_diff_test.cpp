@@ -80,6 +80,25 @@ TEST(NoiseAwareDiff, ZeroVariancePixelsUseTheAbsoluteThreshold) {
   EXPECT_EQ(r.zeroVarianceFailures, 1);
 }
 
+TEST(NoiseAwareDiff, TStatisticByHand) {
+  Image a = test::constantImage(2, 1, {"R", "G", "B", "variance.R", "variance.G", "variance.B"}, 0.01f);
+  Image b = a;
+  a.at(0, 0, 0) = 1.0f, b.at(0, 0, 0) = 1.3f;  // t = 0.3 / sqrt(0.01 + 0.01)
+  b.at(1, 0, 4) = 0.03f;                       // same values, more variance: t = 0
+  NoiseAwareOptions o;
+  o.relativeFloor = 0;
+  const std::vector<float> t = perPixelMaxT(a, b, o);
+  EXPECT_NEAR(t[0], (1.3f - 1.0f) / std::sqrt(0.02), 1e-5);
+  EXPECT_EQ(t[1], 0.0f);
+  // With the floor, sigma^2 gains (floor * (|a|+|b|)/2)^2.
+  o.relativeFloor = 0.1;
+  EXPECT_NEAR(perPixelMaxT(a, b, o)[0], 0.3 / std::sqrt(0.02 + 0.115 * 0.115), 1e-5);
+  const NoiseAwareReport r = noiseAwareDiff(a, b, o);
+  EXPECT_NEAR(r.maxT, 0.3 / std::sqrt(0.02 + 0.115 * 0.115), 1e-5);
+  EXPECT_EQ(r.maxX, 0);
+  EXPECT_EQ(r.maxChannel, "R");
+}
+
 TEST(NoiseAwareDiff, RequiresVarianceChannels) {
   const Image plain = test::constantImage(4, 4, {"R", "G", "B"}, 0.5f);
   EXPECT_FALSE(hasVarianceChannels(plain));
