@@ -28,6 +28,30 @@ Vec4f lookup(const SceneDesc& scene, const TextureRef& ref, const Vec2f& uv) {
   return sampleTexture(scene.textures[ref.texture], uv);
 }
 
+// World-space tangent (xyz = dp/du, w = handedness) of the hit triangle from
+// its uv parameterisation, for meshes that come without TANGENT: a per-face
+// stand-in for MikkTSpace. glTF's v runs down the image while normal maps
+// point +Y up, so the bitangent is -dp/dv. Zero when the uvs are degenerate.
+Vec4f faceTangent(const SceneDesc& scene, const SurfaceHit& hit) {
+  if (hit.instance < 0 || std::size_t(hit.instance) >= scene.instances.size()) return {};
+  const MeshInstance& inst = scene.instances[hit.instance];
+  const Mesh& mesh = scene.meshes[inst.mesh];
+  if (mesh.uvs.empty() || 3 * std::size_t(hit.primitive) + 2 >= mesh.indices.size()) return {};
+  const std::uint32_t* idx = &mesh.indices[3 * std::size_t(hit.primitive)];
+  const Vec3f p0 = inst.worldFromObject.point(mesh.positions[idx[0]]);
+  const Vec3f e1 = inst.worldFromObject.point(mesh.positions[idx[1]]) - p0;
+  const Vec3f e2 = inst.worldFromObject.point(mesh.positions[idx[2]]) - p0;
+  const Vec2f d1 = mesh.uvs[idx[1]] - mesh.uvs[idx[0]], d2 = mesh.uvs[idx[2]] - mesh.uvs[idx[0]];
+  const float det = d1.x * d2.y - d1.y * d2.x;
+  if (!(std::abs(det) > 1e-12f)) return {};
+  const Vec3f dpdu = (e1 * d2.y - e2 * d1.y) / det;
+  const Vec3f dpdv = (e2 * d1.x - e1 * d2.x) / det;
+  if (!(lengthSquared(dpdu) > 0) || !isFinite(dpdu)) return {};
+  const Vec3f t = normalize(dpdu);
+  const float w = dot(cross(hit.shadingNormal, t), -dpdv) < 0 ? -1.0f : 1.0f;
+  return {t.x, t.y, t.z, w};
+}
+
 }  // namespace
 
 Rgb emittedRadiance(const MaterialTable& materials, int index, const Vec2f& uv, float cosFront) {
@@ -47,15 +71,17 @@ ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& 
   sp.geometricNormal = back ? -hit.geometricNormal : hit.geometricNormal;
   Vec3f n = back ? -hit.shadingNormal : hit.shadingNormal;
 
-  if (m.normalTexture.valid() && (hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0)) {
+  const bool hasTangent = hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0;
+  const Vec4f tangent4 = !m.normalTexture.valid() || hasTangent ? hit.tangent : faceTangent(scene, hit);
+  if (m.normalTexture.valid() && (tangent4.x != 0 || tangent4.y != 0 || tangent4.z != 0)) {
     const Vec4f t = lookup(scene, m.normalTexture, hit.uv);
     const Vec3f local{(2 * t.x - 1) * m.normalScale, (2 * t.y - 1) * m.normalScale, 2 * t.z - 1};
     // Gram-Schmidt the interpolated tangent against the shading normal.
-    const Vec3f tangent0 = hit.tangent.xyz();
+    const Vec3f tangent0 = tangent4.xyz();
     Vec3f tangent = tangent0 - n * dot(n, tangent0);
     if (lengthSquared(tangent) > 1e-12f) {
       tangent = normalize(tangent);
-      const Vec3f bitangent = cross(n, tangent) * (hit.tangent.w < 0 ? -1.0f : 1.0f);
+      const Vec3f bitangent = cross(n, tangent) * (tangent4.w < 0 ? -1.0f : 1.0f);
       const Vec3f mapped = tangent * local.x + bitangent * local.y + n * local.z;
       if (lengthSquared(mapped) > 0 && isFinite(mapped)) n = normalize(mapped);
     }

@@ -1,0 +1,84 @@
+// Material evaluation: factors times textures, and normal maps in glTF's
+// tangent space (+X along u, +Y toward decreasing v, i.e. up in the image).
+#include "render/material_eval.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lensrt {
+namespace {
+
+// A quad in y = 0 facing +Y whose u runs along +X and v along +Z, with a 1x1
+// normal texture holding the tangent-space normal `n`.
+SceneDesc normalMappedQuad(const Vec3f& n, bool withTangents) {
+  SceneDesc s;
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
+  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+  if (withTangents) m.tangents.assign(4, Vec4f{1, 0, 0, 1});  // +X, bitangent cross(N,T) = -Z
+  m.indices = {0, 2, 1, 0, 3, 2};
+  m.material = 0;
+  s.meshes.push_back(m);
+  s.instances.push_back({0, Transform()});
+  Texture t;
+  t.width = t.height = 1;
+  t.texels = {{0.5f * (n.x + 1), 0.5f * (n.y + 1), 0.5f * (n.z + 1), 1}};
+  s.textures.push_back(t);
+  Material mat;
+  mat.baseColor = {0.5f, 0.25f, 1, 1};
+  mat.metallic = 0.3f;
+  mat.roughness = 0.7f;
+  mat.normalTexture.texture = 0;
+  s.materials.push_back(mat);
+  return s;
+}
+
+SurfaceHit hitOnQuad(const Vec4f& tangent) {
+  SurfaceHit h;
+  h.position = {0.4f, 0, 0.3f};
+  h.geometricNormal = h.shadingNormal = {0, 1, 0};
+  h.tangent = tangent;
+  h.uv = {0.4f, 0.3f};
+  h.material = 0;
+  h.instance = 0;
+  h.primitive = 0;
+  return h;
+}
+
+TEST(MaterialEval, FactorsAndNormalMapFollowGltfTangentSpace) {
+  const float s = std::sin(0.5f), c = std::cos(0.5f);
+  // Tilt toward +u (tangent): the world normal leans toward +X.
+  // Tilt toward +Y of the map (up in the image = decreasing v = -Z here).
+  struct Case {
+    Vec3f mapNormal, expectedWorld;
+  };
+  for (const Case& k : {Case{{s, 0, c}, {s, c, 0}}, Case{{0, s, c}, {0, c, -s}}}) {
+    for (bool withTangents : {true, false}) {
+      const SceneDesc scene = normalMappedQuad(k.mapNormal, withTangents);
+      const MaterialTable materials(scene);
+      const SurfaceHit hit = hitOnQuad(withTangents ? Vec4f{1, 0, 0, 1} : Vec4f{0, 0, 0, 0});
+      const ShadingPoint sp = evaluateMaterial(materials, hit, normalize(Vec3f{0.1f, 1, 0.2f}));
+      EXPECT_NEAR(sp.frame.n.x, k.expectedWorld.x, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
+      EXPECT_NEAR(sp.frame.n.y, k.expectedWorld.y, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
+      EXPECT_NEAR(sp.frame.n.z, k.expectedWorld.z, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
+      EXPECT_FLOAT_EQ(sp.bsdf.baseColor.y, 0.25f);
+      EXPECT_FLOAT_EQ(sp.bsdf.metallic, 0.3f);
+      EXPECT_FLOAT_EQ(sp.bsdf.roughness, 0.7f);
+    }
+  }
+}
+
+TEST(MaterialEval, EmissionIsFrontFacingUnlessDoubleSided) {
+  SceneDesc scene = normalMappedQuad({0, 0, 1}, true);
+  scene.materials[0].emissive = {2, 3, 4};
+  const MaterialTable materials(scene);
+  EXPECT_EQ(emittedRadiance(materials, 0, {0.5f, 0.5f}, 0.5f), Rgb(2, 3, 4));
+  EXPECT_EQ(emittedRadiance(materials, 0, {0.5f, 0.5f}, -0.5f), Rgb(0, 0, 0));
+  scene.materials[0].doubleSided = true;
+  EXPECT_EQ(emittedRadiance(MaterialTable(scene), 0, {0.5f, 0.5f}, -0.5f), Rgb(2, 3, 4));
+}
+
+}  // namespace
+}  // namespace lensrt
