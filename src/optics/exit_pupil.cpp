@@ -80,7 +80,7 @@ class NodeSolver {
     const double dRim = std::max(D - sagRim, 1e-3 * D);
     const double extent = 1.05 * (filmRadius + (a + filmRadius) * D / dRim) + 1e-3;
 
-    constexpr int kGrid = 24;
+    constexpr int kGrid = 16;
     std::vector<Vec2d> inside;
     for (int j = 0; j < kGrid; ++j)
       for (int i = 0; i < kGrid; ++i) {
