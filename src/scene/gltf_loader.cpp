@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "core/error.h"
@@ -55,10 +56,24 @@ bool isGlb(const std::filesystem::path& file, const std::string& name) {
   return true;
 }
 
+// nlohmann's parse errors read "[json.exception.parse_error.101] parse error at
+// line 3, column 7: what"; keep the line for InputError and the rest as text.
+[[noreturn]] void throwParseError(const std::string& name, const std::string& err) {
+  static const std::regex json(
+      R"(\[json\.exception\.[a-z_.0-9]+\] parse error at line (\d+), column (\d+): (.*))");
+  std::smatch m;
+  if (std::regex_search(err, m, json)) {
+    const int line = m[1].length() < 9 ? std::stoi(m[1].str()) : 0;
+    throw InputError(name, "JSON syntax error at column " + m[2].str() + ": " + m[3].str(), line);
+  }
+  throw InputError(name, err);
+}
+
 tinygltf::Model parse(const std::filesystem::path& file, const std::string& name, Warnings& warnings) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(name, "file not found");
   if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name, "not a regular file");
+  if (std::filesystem::file_size(file, ec) == 0) throw InputError(name, "file is empty");
   const bool binary = isGlb(file, name);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(gltf::deferImageDecoding, nullptr);
@@ -69,7 +84,7 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
   std::istringstream lines(warn);
   for (std::string line; std::getline(lines, line);)
     if (!oneLine(line).empty()) warnings.warn(oneLine(line));
-  if (!ok) throw InputError(name, err.empty() ? "cannot parse the glTF file" : oneLine(err));
+  if (!ok) throwParseError(name, err.empty() ? "cannot parse the glTF file" : oneLine(err));
   return model;
 }
 

@@ -1,0 +1,213 @@
+// Bad input: one InputError with a one-line message naming the file, never a crash.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/error.h"
+#include "gltf_test_builder.h"
+#include "scene/gltf_loader.h"
+
+namespace lensrt {
+namespace {
+
+using nlohmann::json;
+using test::GltfBuilder;
+
+// The message of the InputError that loading `file` throws ("" if none).
+std::string errorOf(const std::filesystem::path& file, int scene = -1) {
+  Warnings w;
+  try {
+    loadGltf(file, scene, w);
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), file.string());
+    EXPECT_EQ(e.message().find('\n'), std::string::npos) << e.message();
+    return e.message();
+  }
+  return "";
+}
+
+std::string errorOf(const GltfBuilder& b, int scene = -1) {
+  return errorOf(test::writeFile(test::testDir() / "bad.gltf", b.json()), scene);
+}
+
+GltfBuilder validSquare() {
+  GltfBuilder b;
+  b.node({{"mesh", b.square()}});
+  return b;
+}
+
+TEST(GltfErrors, ValidBaselineLoads) {
+  EXPECT_EQ(errorOf(validSquare()), "");
+}
+
+TEST(GltfErrors, MissingFile) {
+  EXPECT_EQ(errorOf(test::testDir() / "nope.gltf"), "file not found");
+}
+
+TEST(GltfErrors, BrokenJsonReportsLineAndColumn) {
+  const auto file = test::writeFile(test::testDir() / "bad.gltf",
+                                    "{\n  \"asset\": {\"version\": \"2.0\"},\n  \"nodes\": [}\n");
+  Warnings w;
+  try {
+    loadGltf(file, -1, w);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(e.message().rfind("JSON syntax error at column 13: ", 0), 0u) << e.message();
+    EXPECT_EQ(e.message().find('\n'), std::string::npos);
+  }
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "empty.gltf", "")), "file is empty");
+}
+
+TEST(GltfErrors, MissingBin) {
+  GltfBuilder b = validSquare();
+  json d = json::parse(b.json());
+  d["buffers"][0]["uri"] = "geometry.bin";
+  const std::string msg = errorOf(test::writeFile(test::testDir() / "bad.gltf", d.dump()));
+  EXPECT_NE(msg.find("geometry.bin"), std::string::npos) << msg;
+}
+
+TEST(GltfErrors, BufferShorterThanItsViews) {
+  GltfBuilder b = validSquare();
+  b.doc["bufferViews"][0]["byteLength"] = 4000;
+  EXPECT_EQ(errorOf(b), "bufferView 0 (bytes 0..4000) exceeds buffer 0 of 92 bytes");
+}
+
+TEST(GltfErrors, AccessorBeyondItsView) {
+  GltfBuilder b = validSquare();
+  b.doc["accessors"][0]["count"] = 5;
+  EXPECT_EQ(
+      errorOf(b),
+      "mesh '#0' POSITION (accessor 0): accessor reads beyond the end of bufferView 0 (5 elements of 12 "
+      "bytes from offset 0, view is 48 bytes)");
+}
+
+TEST(GltfErrors, AccessorThatDoesNotExist) {
+  GltfBuilder b = validSquare();
+  b.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 42;
+  EXPECT_EQ(errorOf(b), "mesh '#0' NORMAL: accessor 42 does not exist");
+}
+
+TEST(GltfErrors, IndexBeyondVertexCount) {
+  GltfBuilder b;
+  const int pos = b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", pos}}}, {"indices", b.u16({0, 1, 9})}})}});
+  EXPECT_EQ(errorOf(b), "mesh '#0': index 9 beyond the vertex count 3");
+}
+
+TEST(GltfErrors, NanPosition) {
+  GltfBuilder b;
+  const int pos = b.floats({0, 0, 0, std::nanf(""), 0, 0, 0, 1, 0}, "VEC3");
+  b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", pos}}}})}});
+  EXPECT_EQ(errorOf(b), "mesh '#0': vertex position is NaN or infinite");
+}
+
+TEST(GltfErrors, HugeCoordinates) {
+  GltfBuilder b;
+  const int pos = b.floats({0, 0, 0, 1e20f, 0, 0, 0, 1, 0}, "VEC3");
+  b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", pos}}}})}});
+  EXPECT_EQ(errorOf(b), "mesh '#0': vertex coordinate beyond 1e15");
+  GltfBuilder scaled = validSquare();
+  scaled.doc["nodes"][0]["scale"] = {1e16, 1, 1};
+  EXPECT_EQ(errorOf(scaled), "world-space coordinates beyond 1e15 (check the node transforms)");
+}
+
+TEST(GltfErrors, NoMeshes) {
+  GltfBuilder b;
+  b.node({{"name", "empty"}});
+  EXPECT_EQ(errorOf(b), "nothing to render: the file has no meshes");
+}
+
+TEST(GltfErrors, DegenerateTrianglesOnly) {
+  GltfBuilder b;
+  const int pos = b.floats({0, 0, 0, 1, 1, 1, 2, 2, 2, 5, 5, 5}, "VEC3");  // collinear
+  b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", pos}}}, {"indices", b.u16({0, 1, 2, 3, 3, 0})}})}});
+  EXPECT_EQ(errorOf(b), "nothing to render: all triangles are degenerate");
+}
+
+TEST(GltfErrors, GlbWithWrongHeader) {
+  std::vector<std::uint8_t> bytes = validSquare().glb();
+  bytes[0] = 'x';
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "bad.glb", bytes)),
+            "not a binary glTF: the header does not start with 'glTF'");
+  bytes[0] = 'g';
+  bytes[4] = 1;
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "v1.glb", bytes)),
+            "unsupported .glb version 1 (expected 2)");
+}
+
+TEST(GltfErrors, TruncatedGlb) {
+  std::vector<std::uint8_t> bytes = validSquare().glb();
+  bytes.resize(bytes.size() - 30);
+  EXPECT_NE(errorOf(test::writeFile(test::testDir() / "short.glb", bytes)), "");
+}
+
+TEST(GltfErrors, SceneIndexOutOfRange) {
+  EXPECT_EQ(errorOf(validSquare(), 3), "scene index 3 out of range (the file has 1 scene)");
+}
+
+TEST(GltfErrors, UnsupportedRequiredExtension) {
+  GltfBuilder b = validSquare();
+  b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  EXPECT_EQ(errorOf(b), "required extension KHR_draco_mesh_compression is not supported");
+}
+
+TEST(GltfErrors, NodeCycle) {
+  GltfBuilder b = validSquare();
+  b.doc["nodes"][0]["children"] = {0};
+  EXPECT_EQ(errorOf(b), "node 0 is reached twice (a cycle or a shared child; glTF nodes must form trees)");
+}
+
+TEST(GltfErrors, NodeAndMeshIndicesOutOfRange) {
+  GltfBuilder b = validSquare();
+  b.doc["scenes"][0]["nodes"].push_back(7);
+  EXPECT_EQ(errorOf(b), "node 7 does not exist");
+  GltfBuilder m = validSquare();
+  m.doc["nodes"][0]["mesh"] = 3;
+  EXPECT_EQ(errorOf(m), "mesh 3 does not exist");
+}
+
+// Random byte corruption of valid files: each either loads or throws
+// InputError; any other outcome (a crash, another exception) fails.
+void fuzz(const std::vector<std::uint8_t>& original, const std::string& name, unsigned seed) {
+  std::mt19937 rng(seed);
+  const std::filesystem::path dir = test::testDir();
+  for (int round = 0; round < 150; ++round) {
+    std::vector<std::uint8_t> bytes = original;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % bytes.size();
+      switch (rng() % 3) {
+        case 0:
+          bytes[at] = static_cast<std::uint8_t>(rng());
+          break;
+        case 1:
+          bytes[at] = static_cast<std::uint8_t>("0123456789-e.,:{}[]\""[rng() % 20]);
+          break;
+        default:
+          bytes.resize(std::max<std::size_t>(at, 1));
+      }
+    }
+    const auto file = test::writeFile(dir / name, bytes);
+    Warnings w;
+    try {
+      loadGltf(file, -1, w);
+    } catch (const InputError&) {
+    }
+  }
+}
+
+TEST(GltfErrors, CorruptedFilesNeverCrash) {
+  GltfBuilder b;
+  b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}}};
+  const int square = b.square(0);
+  b.node({{"mesh", square}, {"translation", {1, 2, 3}}});
+  b.node({{"mesh", square}, {"scale", {2, 2, 2}}});
+  const std::string text = b.json();
+  fuzz(std::vector<std::uint8_t>(text.begin(), text.end()), "fuzz.gltf", 1);
+  fuzz(b.glb(), "fuzz.glb", 2);
+}
+
+}  // namespace
+}  // namespace lensrt
