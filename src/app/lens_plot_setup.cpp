@@ -1,0 +1,89 @@
+#include "app/lens_plot_setup.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/constants.h"
+#include "optics/focus.h"
+#include "optics/lens_readers.h"
+
+namespace lensrt {
+namespace {
+
+// Same syntax as `lens info --sensor` and `--focus`.
+void parseSensor(const std::string& text, double& w, double& h) {
+  const std::size_t x = text.find_first_of("xX");
+  try {
+    if (x != std::string::npos) {
+      std::size_t used1 = 0, used2 = 0;
+      const std::string a = text.substr(0, x), b = text.substr(x + 1);
+      w = std::stod(a, &used1);
+      h = std::stod(b, &used2);
+      if (used1 == a.size() && used2 == b.size() && w > 0 && h > 0 && w < 1e4 && h < 1e4) return;
+    }
+  } catch (const std::exception&) {
+  }
+  throw CLI::ValidationError("--sensor", "expected WIDTHxHEIGHT in mm, e.g. 36x24, got '" + text + "'");
+}
+
+double parseFocusMm(const std::string& text) {
+  if (text == "inf" || text == "infinity") return kInfinity;
+  try {
+    std::size_t used = 0;
+    const double m = std::stod(text, &used);
+    if (used == text.size() && m > 0 && std::isfinite(m)) return m * 1000.0;
+  } catch (const std::exception&) {
+  }
+  throw CLI::ValidationError("--focus", "expected a distance in metres > 0 or 'inf', got '" + text + "'");
+}
+
+}  // namespace
+
+void addLensViewOptions(CLI::App& command, LensViewOptions& o) {
+  command.add_option("lens", o.lens, "Lens file (.lens, .json, .dat) or library name, e.g. dgauss-50mm")
+      ->required();
+  command.add_option("-o,--output", o.output, "Output SVG file")->required();
+  command.add_option("--fstop", o.fNumber, "Stop down to this f-number (default: widest)");
+  command.add_option("--focus", o.focus, "Focus distance in metres from the entrance pupil, or 'inf'")
+      ->capture_default_str();
+  command.add_option("--sensor", o.sensor, "Sensor size WIDTHxHEIGHT in mm (sets the field)")
+      ->capture_default_str();
+}
+
+void checkSvgOutput(const std::string& output) {
+  if (std::filesystem::path(output).extension() != ".svg")
+    throw CLI::ValidationError("--output", "expected a .svg file, got '" + output + "'");
+}
+
+double LensView::halfDiagonalMm() const {
+  return std::hypot(sensorWidthMm, sensorHeightMm) / 2.0;
+}
+
+std::string LensView::focusText() const {
+  return std::isinf(focusMm) ? "infinity" : fmt::format("{:.3g} m", focusMm / 1000.0);
+}
+
+std::string LensView::summary() const {
+  const ParaxialData& p = lens.paraxial();
+  return fmt::format("EFL {:.2f} mm, f/{:.3g}, focus {}, sensor {:g} x {:g} mm", p.efl, p.fNumber,
+                     focusText(), sensorWidthMm, sensorHeightMm);
+}
+
+LensView prepareLensView(const LensViewOptions& o, Warnings& warnings) {
+  checkSvgOutput(o.output);
+  double w = 0.0, h = 0.0;
+  parseSensor(o.sensor, w, h);
+  const double focusMm = parseFocusMm(o.focus);
+  if (o.fNumber && !(*o.fNumber > 0.0 && std::isfinite(*o.fNumber)))
+    throw CLI::ValidationError("--fstop", "must be a positive f-number");
+  const LensPrescription design = loadLens(findLens(o.lens, LENSRT_LENS_DIR));
+  const double widest = computeParaxial(design).fNumber;
+  LensSystem lens(o.fNumber ? stopDown(design, *o.fNumber, warnings) : design);
+  const double film = focusFilmDistance(lens, focusMm);
+  LensView view{std::move(lens), widest, focusMm, film, w, h};
+  return view;
+}
+
+}  // namespace lensrt

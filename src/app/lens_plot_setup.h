@@ -1,0 +1,45 @@
+// Options and set-up shared by `lens diagram` and `lens plot`: the lens,
+// stopped down and focused, with the sensor that sets the field.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "core/warnings.h"
+#include "optics/lens_system.h"
+
+namespace lensrt {
+
+struct LensViewOptions {
+  std::string lens;
+  std::string output;
+  std::optional<double> fNumber;
+  std::string focus = "inf";
+  std::string sensor = "36x24";
+};
+
+// Registers FILE, -o/--output (required), --fstop, --focus and --sensor.
+void addLensViewOptions(CLI::App& command, LensViewOptions& options);
+
+struct LensView {
+  LensSystem lens;
+  double widestFNumber = 0.0;
+  double focusMm = 0.0;         // from the entrance pupil; kInfinity allowed
+  double filmDistanceMm = 0.0;  // rear vertex -> film
+  double sensorWidthMm = 36.0, sensorHeightMm = 24.0;
+  double halfDiagonalMm() const;
+  double filmZ() const { return lens.rearZ() + filmDistanceMm; }
+  std::string focusText() const;  // "infinity" or "2 m"
+  // "EFL 50.36 mm, f/2.03, focus infinity, sensor 36 x 24 mm"
+  std::string summary() const;
+};
+
+// Validates the option values (CLI::ValidationError: exit 2), loads, stops
+// down and focuses the lens (InputError: exit 1).
+LensView prepareLensView(const LensViewOptions& options, Warnings& warnings);
+
+// The output must be an .svg path.
+void checkSvgOutput(const std::string& output);
+
+}  // namespace lensrt
