@@ -81,7 +81,7 @@ int runInfo(const InfoOptions& o) {
   std::vector<std::string> warningList;
   Warnings warnings([&](const std::string& w) {
     warningList.push_back(w);
-    if (!o.json) fmt::print(stderr, "lensrt: warning: {}\n", w);
+    fmt::print(stderr, "lensrt: warning: {}\n", w);
   });
   const LensPrescription design = loadLens(findLens(o.lens, LENSRT_LENS_DIR));
   const double widest = computeParaxial(design).fNumber;
@@ -101,7 +101,9 @@ int runInfo(const InfoOptions& o) {
   const DepthOfField dof = std::isinf(focusMm)
                                ? DepthOfField{hyperfocal, kInfinity}
                                : depthOfField(p.efl, p.fNumber, coc, conj.objectDistanceFromH);
-  const double nearMm = std::isinf(focusMm) ? hyperfocal : dof.nearLimit + hToPupil;
+  // Focused at infinity the near limit is f^2 / (N c) (the seed's D_N as s -> infinity).
+  const double nearMm =
+      std::isinf(focusMm) ? p.efl * p.efl / (p.fNumber * coc) + hToPupil : dof.nearLimit + hToPupil;
   const double farMm = dof.farLimit + hToPupil;
 
   const ExitPupilBounds bounds(lens, lens.rearZ() + filmDistance, halfDiagonal);
