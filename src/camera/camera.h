@@ -35,6 +35,23 @@ struct CameraRay {
   float weight = 1.0f;  // multiplies the radiance: irradiance estimate scaled by exposure
 };
 
+// Radiometry shared by the models (see exposure.h for the exposure modes):
+// the film records irradiance E = integral of L cos(th_film) cos(th_pupil) /
+// d^2 over the pupil, and a ray's weight is that integrand over its sampling
+// pdf, times the exposure scale. So the thin lens obeys the seed's
+// E = L pi cos^4(theta) / (4 N^2) (focused at infinity; A cos^4 / Q^2 at a
+// finite focus) and the full lens shows natural and optical vignetting.
+
+// What a camera is, for metadata and reports.
+struct CameraInfo {
+  std::string model;         // "pinhole", "thin", "thick", "lens"
+  std::string lens;          // lens name the model was derived from; empty without one
+  double fNumber = 0.0;      // 0: no aperture (pinhole)
+  double focusMetres = 0.0;  // from the entrance pupil; +infinity at infinity; 0: none (pinhole)
+  double focalLengthMm = 0.0;
+  std::string exposure;  // e.g. "normalized" or "physical 0.01s ISO100"
+};
+
 class Camera {
  public:
   Camera(const Transform& worldFromCamera, const FilmGeometry& film)
@@ -54,6 +71,7 @@ class Camera {
 
   // Model name and parameters for EXR metadata and reports, e.g. "pinhole yfov=39.6deg".
   virtual std::string describe() const = 0;
+  virtual CameraInfo info() const = 0;
 
   const Transform& worldFromCamera() const { return worldFromCamera_; }
   const FilmGeometry& film() const { return film_; }

@@ -7,15 +7,32 @@
 
 namespace lensrt {
 
-PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film,
-                             double yfovRadians)
+PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians)
     : Camera(worldFromCamera, film), yfov_(yfovRadians), tanHalfY_(std::tan(yfovRadians / 2)) {
   if (!(yfovRadians > 0 && yfovRadians < kPi))
     throw std::invalid_argument("pinhole field of view must be between 0 and 180 degrees");
 }
 
+PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
+                             const Exposure& exposure, double fNumber, std::string lensName)
+    : PinholeCamera(worldFromCamera, film, yfovRadians) {
+  onAxisWeight_ = exposureScale(exposure, fNumber) * idealIrradianceRatio(fNumber);
+  exposure_ = exposure;
+  fNumber_ = fNumber;
+  lensName_ = std::move(lensName);
+}
+
 std::string PinholeCamera::describe() const {
   return "pinhole yfov=" + std::to_string(yfov_ * 180.0 / kPi) + "deg";
+}
+
+CameraInfo PinholeCamera::info() const {
+  CameraInfo i;
+  i.model = "pinhole";
+  i.lens = lensName_;
+  i.focalLengthMm = 0.5 * film().sensorHeightMm / tanHalfY_;
+  i.exposure = onAxisWeight_ ? lensrt::describe(exposure_) : "radiance";
+  return i;
 }
 
 std::optional<CameraRay> PinholeCamera::generateCameraSpaceRay(const CameraSample& s) const {
@@ -24,8 +41,13 @@ std::optional<CameraRay> PinholeCamera::generateCameraSpaceRay(const CameraSampl
   // Normalised device coordinates in [-1,1], y up.
   const double ndcX = 2.0 * s.film.x / f.width - 1.0;
   const double ndcY = 1.0 - 2.0 * s.film.y / f.height;
-  const Vec3f d{float(ndcX * tanHalfY_ * aspect), float(ndcY * tanHalfY_), -1.0f};
-  return CameraRay{Ray{{0, 0, 0}, d}, 1.0f};
+  const double dx = ndcX * tanHalfY_ * aspect, dy = ndcY * tanHalfY_;
+  float weight = 1.0f;
+  if (onAxisWeight_) {
+    const double cos2 = 1.0 / (1.0 + dx * dx + dy * dy);
+    weight = float(*onAxisWeight_ * cos2 * cos2);
+  }
+  return CameraRay{Ray{{0, 0, 0}, {float(dx), float(dy), -1.0f}}, weight};
 }
 
 }  // namespace lensrt

@@ -1,18 +1,29 @@
 #pragma once
 
+#include <optional>
+
 #include "camera/camera.h"
+#include "camera/exposure.h"
 
 namespace lensrt {
 
-// Ideal perspective projection through a point. Its film records radiance
-// directly (weight 1): the normalized exposure of an ideal lens on axis.
+// Ideal perspective projection through a point at the camera origin.
+//
+// Two radiometries: the plain constructor records radiance (weight 1, for
+// tests and previews); given an exposure, the pinhole records the irradiance
+// of an ideal f/N lens shrunk to a point, pi cos^4(theta) / (4 N^2) times the
+// exposure scale (so cos^4(theta) when normalized), like the other models.
 class PinholeCamera final : public Camera {
  public:
   // yfovRadians spans the film height; the horizontal field follows from the
   // film's aspect ratio (pixels are square on the sensor).
   PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians);
+  // fNumber only sets the physical exposure (a pinhole has no aperture to speak of).
+  PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
+                const Exposure& exposure, double fNumber, std::string lensName = {});
 
   std::string describe() const override;
+  CameraInfo info() const override;
   double yfov() const { return yfov_; }
 
  protected:
@@ -21,6 +32,10 @@ class PinholeCamera final : public Camera {
  private:
   double yfov_;
   double tanHalfY_;
+  std::optional<double> onAxisWeight_;  // empty: radiance camera
+  Exposure exposure_;
+  double fNumber_ = 0.0;
+  std::string lensName_;
 };
 
 }  // namespace lensrt

@@ -1,0 +1,36 @@
+// Raster pixels to sensor millimetres, shared by every model so they agree on
+// orientation.
+#pragma once
+
+#include <cmath>
+
+#include "camera/camera.h"
+#include "core/vec.h"
+
+namespace lensrt {
+
+// The sensor point (mm, relative to the sensor centre) where the UPRIGHT image
+// of raster position `raster` lies: x right, y up, as the picture is seen.
+// A lens forms an inverted image, so the physical film point behind the lens
+// is the negative of this (the camera reads the sensor out rotated by 180 deg).
+inline Vec2d uprightSensorPointMm(const FilmGeometry& f, const Vec2f& raster) {
+  return {(double(raster.x) / f.width - 0.5) * f.sensorWidthMm,
+          (0.5 - double(raster.y) / f.height) * f.sensorHeightMm};
+}
+
+// The raster position of an upright sensor point: the inverse of the above.
+inline Vec2d rasterOfUprightSensorPointMm(const FilmGeometry& f, const Vec2d& mm) {
+  return {(mm.x / f.sensorWidthMm + 0.5) * f.width, (0.5 - mm.y / f.sensorHeightMm) * f.height};
+}
+
+inline double sensorHalfDiagonalMm(const FilmGeometry& f) {
+  return 0.5 * std::hypot(f.sensorWidthMm, f.sensorHeightMm);
+}
+
+// Film-point cosine to the axis of a ray from a film point offset `r` (mm) to
+// a pupil point straight ahead at axial distance `dz`: cos(theta).
+inline double cosToAxis(double r, double dz) {
+  return dz / std::sqrt(dz * dz + r * r);
+}
+
+}  // namespace lensrt

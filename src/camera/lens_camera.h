@@ -1,0 +1,71 @@
+#pragma once
+
+#include <memory>
+
+#include "camera/aperture.h"
+#include "camera/camera.h"
+#include "camera/exposure.h"
+#include "core/warnings.h"
+#include "optics/exit_pupil.h"
+#include "optics/lens_system.h"
+
+namespace lensrt {
+
+struct LensCameraParams {
+  double fNumber = 0.0;            // <= 0: the lens wide open
+  double focusMetres = kInfinity;  // from the entrance pupil; +infinity allowed
+  ApertureShape aperture;          // blades cut the (round) stop to a polygon of the f-number's area
+  // Trace each sample at its own wavelength (dispersion). Off: every ray at
+  // the d line, where the focus is computed (the renderer is RGB, so sampled
+  // wavelengths only blur).
+  bool dispersion = false;
+  int pupilIntervals = 64;  // exit pupil bounds resolution over the film radius
+};
+
+// The full element stack (Kolb et al. 1995): film point -> a point inside the
+// exit pupil bounds on the rear-vertex plane -> exact trace through every
+// surface -> the scene. Rays the stop, a rim or total internal reflection
+// block return nullopt (vignetting).
+//
+// Radiometry: E/L = integral over the rear-vertex plane of
+// cos(th_film) cos(th_plane) / d^2 dA = dz^2 / d^4 dA, estimated with the
+// bounds' pdf; the exposure uses the stopped-down lens's paraxial f-number
+// (the requested one with blades).
+class LensCamera final : public Camera {
+ public:
+  // Stops the prescription down and focuses it (InputError when it cannot
+  // focus that close; a too-wide f-number clamps and warns).
+  LensCamera(const Transform& worldFromCamera, const FilmGeometry& film, const LensPrescription& prescription,
+             const LensCameraParams& params, const Exposure& exposure, Warnings& warnings);
+
+  std::string describe() const override;
+  CameraInfo info() const override;
+  const LensSystem& lens() const { return *lens_; }
+  const ExitPupilBounds& bounds() const { return *bounds_; }
+  double fNumber() const { return fNumber_; }
+  double filmZ() const { return filmZ_; }
+  // Camera space origin (the entrance pupil) in lens space z, mm.
+  double entrancePupilZ() const { return entrancePupilZ_; }
+  // The camera-space ray from a raster position through a point of the
+  // rear-vertex plane (lens space x, y in mm), traced at `wavelengthNm`;
+  // nullopt when the lens blocks it. The geometry behind generateRay, apart
+  // from the sampling, for tests and tools.
+  std::optional<Ray> traceThrough(const Vec2f& raster, const Vec2d& pupilPoint,
+                                  double wavelengthNm = kWavelengthDNm) const;
+
+ protected:
+  std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
+
+ private:
+  LensCameraParams params_;
+  Exposure exposure_;
+  std::unique_ptr<LensSystem> lens_;
+  std::unique_ptr<ExitPupilBounds> bounds_;
+  std::optional<Aperture> polygon_;  // in the stop plane, when blades are set
+  double fNumber_ = 0.0;
+  double filmZ_ = 0.0;
+  double entrancePupilZ_ = 0.0;
+  double scale_ = 0.0;  // exposure scale
+};
+
+}  // namespace lensrt

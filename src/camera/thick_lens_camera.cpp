@@ -1,0 +1,99 @@
+#include "camera/thick_lens_camera.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "camera/film_mapping.h"
+#include "camera/thin_lens_camera.h"
+
+namespace lensrt {
+
+ThickLensParams thickLensFromParaxial(const ParaxialData& p, double fNumber, double focusMetres) {
+  ThickLensParams t;
+  t.focalLengthMm = p.efl;
+  t.frontPrincipalZ = p.frontPrincipalZ;
+  t.rearPrincipalZ = p.rearPrincipalZ;
+  t.entrancePupilZ = p.entrancePupilZ;
+  t.exitPupilZ = p.exitPupilZ;
+  t.fNumber = fNumber > 0.0 ? fNumber : p.fNumber;
+  // Both pupils are images of the stop: they scale together when it closes.
+  const double scale = p.fNumber / t.fNumber;
+  t.entrancePupilDiameter = p.entrancePupilDiameter * scale;
+  t.exitPupilDiameter = p.exitPupilDiameter * scale;
+  t.focusMetres = focusMetres;
+  return t;
+}
+
+double lensVerticalFov(const ParaxialData& p, double focusMetres, double sensorHeightMm) {
+  const double half = sensorHeightMm / 2.0;
+  if (std::isinf(focusMetres)) return 2.0 * std::atan(half / p.efl);
+  const double s = focusMetres * 1000.0;
+  const double u = s + (p.frontPrincipalZ - p.entrancePupilZ);  // object distance from H
+  const double v = thinLensImageDistance(p.efl, u);
+  return 2.0 * std::atan(half * (u / v) / s);
+}
+
+ThickLensCamera::ThickLensCamera(const Transform& worldFromCamera, const FilmGeometry& film,
+                                 const ThickLensParams& params, const Exposure& exposure)
+    : Camera(worldFromCamera, film),
+      params_(params),
+      exposure_(exposure),
+      exitPupil_(params.exitPupilDiameter / 2.0, params.aperture) {
+  const double f = params.focalLengthMm;
+  if (!(f > 0.0)) throw std::invalid_argument("thick lens: focal length must be positive");
+  const double s = params.focusMetres * 1000.0;
+  if (std::isinf(s)) {
+    u_ = s;
+  } else {
+    u_ = s + (params.frontPrincipalZ - params.entrancePupilZ);
+    if (!(u_ > f)) throw std::invalid_argument("thick lens: cannot focus inside the front focal point");
+  }
+  v_ = thinLensImageDistance(f, u_);
+  filmZ_ = params.rearPrincipalZ + v_;
+  const double lxp = filmZ_ - params.exitPupilZ;
+  if (!(lxp > 0.0)) throw std::invalid_argument("thick lens: the exit pupil lies behind the film");
+  onAxisWeight_ = exposureScale(exposure, params.fNumber) * exitPupil_.area() / (lxp * lxp);
+}
+
+std::string ThickLensCamera::describe() const {
+  char buf[240];
+  std::snprintf(buf, sizeof buf, "thick lens f=%gmm t=%gmm f/%g focus=%gm aperture=%s", params_.focalLengthMm,
+                params_.rearPrincipalZ - params_.frontPrincipalZ, params_.fNumber, params_.focusMetres,
+                lensrt::describe(params_.aperture).c_str());
+  return buf;
+}
+
+CameraInfo ThickLensCamera::info() const {
+  return {"thick",
+          params_.lensName,
+          params_.fNumber,
+          params_.focusMetres,
+          params_.focalLengthMm,
+          lensrt::describe(exposure_)};
+}
+
+std::optional<CameraRay> ThickLensCamera::generateCameraSpaceRay(const CameraSample& s) const {
+  const ThickLensParams& P = params_;
+  const Vec2d up = uprightSensorPointMm(film(), s.film);
+  const Vec3d p{-up.x, -up.y, filmZ_};  // the inverted real image
+  const Vec2d e = exitPupil_.sample({s.lens.x, s.lens.y});
+  const Vec3d q{e.x, e.y, P.exitPupilZ};
+  // Where the image-side ray crosses H'; it leaves H at the same height.
+  const Vec3d a = p + (q - p) * ((P.rearPrincipalZ - filmZ_) / (q.z - filmZ_));
+  const Vec3d origin{a.x, a.y, P.frontPrincipalZ};
+  Vec3d dir;
+  if (std::isinf(u_)) {
+    dir = {up.x, up.y, -v_};  // parallel to the chief ray through the nodal points
+  } else {
+    const double k = u_ / v_;
+    dir = Vec3d{up.x * k, up.y * k, P.frontPrincipalZ - u_} - origin;
+  }
+  const double lxp = filmZ_ - P.exitPupilZ;
+  const double c = cosToAxis(std::hypot(up.x, up.y), lxp);
+  const float weight = float(onAxisWeight_ * c * c * c * c);
+  const Vec3d o = Vec3d{origin.x, origin.y, origin.z - P.entrancePupilZ} * 1e-3;
+  return CameraRay{Ray{Vec3f(o), Vec3f(normalize(dir))}, weight};
+}
+
+}  // namespace lensrt

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "camera/aperture.h"
+#include "camera/camera.h"
+#include "camera/exposure.h"
+#include "optics/paraxial.h"
+
+namespace lensrt {
+
+// The first-order model of a real lens: focal length, both principal planes,
+// both pupils. Positions are lens-space z (mm, +z toward the film, any origin).
+struct ThickLensParams {
+  double focalLengthMm = 50.0;
+  double frontPrincipalZ = 0.0;  // H
+  double rearPrincipalZ = 0.0;   // H'; thickness t = H' - H
+  double entrancePupilZ = 0.0;   // the camera origin
+  double exitPupilZ = 0.0;
+  double exitPupilDiameter = 0.0;      // at `fNumber`
+  double entrancePupilDiameter = 0.0;  // at `fNumber` (= f / N)
+  double fNumber = 2.8;
+  double focusMetres = 10.0;  // from the entrance pupil; +infinity allowed
+  ApertureShape aperture;
+  std::string lensName;
+};
+
+// Cardinal points and pupils of a lens's paraxial data, at f-number `fNumber`
+// (<= 0: the lens's own), focused at `focusMetres`.
+ThickLensParams thickLensFromParaxial(const ParaxialData& p, double fNumber, double focusMetres);
+
+// The vertical field of view (radians) of a lens focused at `focusMetres`
+// from its entrance pupil (infinity allowed), on a sensor `sensorHeightMm`
+// tall: the angle, seen from the entrance pupil, of the in-focus plane's
+// region that images onto the sensor. It narrows as the lens focuses closer
+// (focus breathing); a pinhole given it shows the in-focus plane as the lens does.
+double lensVerticalFov(const ParaxialData& p, double focusMetres, double sensorHeightMm);
+
+// The seed's thick-lens projection: perspective about the front principal
+// point, shifted by the thickness t = H'H: an object point at distance z in
+// front of H and height x images at z' = f z / (z - f) behind H' (the seed
+// writes z < 0 in front: z' = f z / (z + f) + t from H), height
+// x' = -(z'/z) x. Rays: film point -> exit pupil sample -> the rear principal
+// plane; the object-side ray leaves the front principal plane at the same
+// height toward the film point's conjugate.
+//
+// Radiometry as the thin lens's, with the exit pupil: E/L = A_xp cos^4 / L_xp^2,
+// L_xp the film to exit pupil distance, which is pi / (4 N^2) at infinity.
+class ThickLensCamera final : public Camera {
+ public:
+  ThickLensCamera(const Transform& worldFromCamera, const FilmGeometry& film, const ThickLensParams& params,
+                  const Exposure& exposure = {});
+
+  std::string describe() const override;
+  CameraInfo info() const override;
+  const ThickLensParams& params() const { return params_; }
+  double filmZ() const { return filmZ_; }
+  // Object distance from H and image distance from H' (mm) of the focus plane.
+  double objectDistanceFromH() const { return u_; }
+  double imageDistance() const { return v_; }
+
+ protected:
+  std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
+
+ private:
+  ThickLensParams params_;
+  Exposure exposure_;
+  Aperture exitPupil_;
+  double u_ = 0.0, v_ = 0.0, filmZ_ = 0.0;
+  double onAxisWeight_ = 0.0;
+};
+
+}  // namespace lensrt

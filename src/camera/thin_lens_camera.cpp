@@ -1,0 +1,63 @@
+#include "camera/thin_lens_camera.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "camera/film_mapping.h"
+
+namespace lensrt {
+
+double thinLensImageDistance(double f, double s) {
+  if (std::isinf(s)) return f;
+  return f * s / (s - f);
+}
+
+ThinLensCamera::ThinLensCamera(const Transform& worldFromCamera, const FilmGeometry& film,
+                               const ThinLensParams& params, const Exposure& exposure)
+    : Camera(worldFromCamera, film),
+      params_(params),
+      exposure_(exposure),
+      aperture_(params.focalLengthMm / (2.0 * params.fNumber), params.aperture) {
+  if (!(params.focalLengthMm > 0.0)) throw std::invalid_argument("thin lens: focal length must be positive");
+  focusMm_ = params.focusMetres * 1000.0;
+  if (!(focusMm_ > params.focalLengthMm))
+    throw std::invalid_argument("thin lens: cannot focus closer than the focal length");
+  v_ = thinLensImageDistance(params.focalLengthMm, focusMm_);
+  onAxisWeight_ = exposureScale(exposure, params.fNumber) * aperture_.area() / (v_ * v_);
+}
+
+std::string ThinLensCamera::describe() const {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "thin lens f=%gmm f/%g focus=%gm aperture=%s", params_.focalLengthMm,
+                params_.fNumber, params_.focusMetres, lensrt::describe(params_.aperture).c_str());
+  return buf;
+}
+
+CameraInfo ThinLensCamera::info() const {
+  return {"thin",
+          params_.lensName,
+          params_.fNumber,
+          params_.focusMetres,
+          params_.focalLengthMm,
+          lensrt::describe(exposure_)};
+}
+
+std::optional<CameraRay> ThinLensCamera::generateCameraSpaceRay(const CameraSample& s) const {
+  const Vec2d up = uprightSensorPointMm(film(), s.film);
+  // The chief ray through the lens centre leaves along (x, y, -v) (upright
+  // sensor coordinates: the physical film point is (-x, -y, +v)).
+  const Vec2d q = aperture_.sample({s.lens.x, s.lens.y});
+  Vec3d dir;
+  if (std::isinf(focusMm_)) {
+    dir = {up.x, up.y, -v_};
+  } else {
+    const double k = focusMm_ / v_;  // to the focus plane Z = -s
+    dir = Vec3d{up.x * k - q.x, up.y * k - q.y, -focusMm_};
+  }
+  const double c = cosToAxis(std::hypot(up.x, up.y), v_);
+  const float weight = float(onAxisWeight_ * c * c * c * c);
+  return CameraRay{Ray{{float(q.x * 1e-3), float(q.y * 1e-3), 0.0f}, Vec3f(normalize(dir))}, weight};
+}
+
+}  // namespace lensrt

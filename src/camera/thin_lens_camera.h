@@ -1,0 +1,52 @@
+#pragma once
+
+#include "camera/aperture.h"
+#include "camera/camera.h"
+#include "camera/exposure.h"
+
+namespace lensrt {
+
+struct ThinLensParams {
+  double focalLengthMm = 50.0;
+  double fNumber = 2.8;
+  double focusMetres = 10.0;  // from the lens (= entrance pupil); +infinity allowed
+  ApertureShape aperture;
+  std::string lensName;  // the lens it stands for, if any (metadata only)
+};
+
+// An ideal thin lens at the camera origin: every point of the focus plane
+// images to one film point, the film sits at the image distance
+// v = f s / (s - f), and the aperture (entrance = exit pupil) has diameter f/N.
+//
+// Radiometry: the lens obeys the sine condition, as a corrected real lens
+// does, so E/L = A cos^4(theta) / v^2 with theta the chief ray's angle at the
+// film: pi cos^4(theta) / (4 N^2) focused at infinity (the seed's formula,
+// exactly). Each sample carries that value (uniform aperture sampling).
+class ThinLensCamera final : public Camera {
+ public:
+  // Throws std::invalid_argument for f <= 0, N <= 0 or a focus at or inside f.
+  ThinLensCamera(const Transform& worldFromCamera, const FilmGeometry& film, const ThinLensParams& params,
+                 const Exposure& exposure = {});
+
+  std::string describe() const override;
+  CameraInfo info() const override;
+  const ThinLensParams& params() const { return params_; }
+  double imageDistanceMm() const { return v_; }
+  const Aperture& aperture() const { return aperture_; }
+
+ protected:
+  std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
+
+ private:
+  ThinLensParams params_;
+  Exposure exposure_;
+  Aperture aperture_;
+  double v_ = 0.0;             // image distance, mm
+  double focusMm_ = 0.0;       // infinity allowed
+  double onAxisWeight_ = 0.0;  // exposure scale * A / v^2
+};
+
+// Image distance (mm) of an ideal lens of focal length f focused at s (mm, infinity allowed).
+double thinLensImageDistance(double focalLengthMm, double focusMm);
+
+}  // namespace lensrt
