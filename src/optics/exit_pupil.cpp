@@ -231,6 +231,17 @@ std::optional<PupilSample> ExitPupilBounds::sample(Vec2d filmPoint, Vec2d u) con
   return PupilSample{{q.x * cosPhi - q.y * sinPhi, q.x * sinPhi + q.y * cosPhi, planeZ_}, 1.0 / poly.area};
 }
 
+std::vector<Vec2d> ExitPupilBounds::polygon(Vec2d filmPoint) const {
+  const double r = std::hypot(filmPoint.x, filmPoint.y);
+  const int i = intervalOf(r);
+  if (i < 0) return {};
+  const double cosPhi = r > 0 ? filmPoint.x / r : 1.0, sinPhi = r > 0 ? filmPoint.y / r : 0.0;
+  std::vector<Vec2d> out;
+  for (const Vec2d& q : polygons_[i].vertices)
+    out.push_back({q.x * cosPhi - q.y * sinPhi, q.x * sinPhi + q.y * cosPhi});
+  return out;
+}
+
 double ExitPupilBounds::pdf(Vec2d filmPoint, Vec2d pupilPoint) const {
   const double r = std::hypot(filmPoint.x, filmPoint.y);
   const int i = intervalOf(r);

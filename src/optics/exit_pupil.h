@@ -16,6 +16,9 @@
 
 namespace lensrt {
 
+// A camera turns a sample into a ray from film point f toward `point`; its
+// pdf per solid angle is pdf * |point - f|^2 / cos(theta), theta the angle to
+// the axis (the plane is perpendicular to it).
 struct PupilSample {
   Vec3d point;       // on the plane z = planeZ(), lens space, mm
   double pdf = 0.0;  // per unit area (1/mm^2) on that plane
@@ -38,6 +41,9 @@ class ExitPupilBounds {
   std::optional<PupilSample> sample(Vec2d filmPoint, Vec2d u) const;
   // The pdf `sample` would give for that pupil-plane point (0 outside bounds).
   double pdf(Vec2d filmPoint, Vec2d pupilPoint) const;
+  // The bounding polygon for a film point, rotated to its azimuth (lens-space
+  // x, y on the pupil plane; counter-clockwise; empty when nothing passes).
+  std::vector<Vec2d> polygon(Vec2d filmPoint) const;
   // Area of the bounds (mm^2) for a film radius; 0 when nothing passes.
   double area(double filmRadius) const;
 

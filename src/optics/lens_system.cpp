@@ -10,7 +10,8 @@ bool refract(const Vec3d& d, const Vec3d& n, double n1, double n2, Vec3d& out) {
   const double sin2T = eta * eta * std::max(0.0, 1.0 - cosI * cosI);
   if (sin2T >= 1.0) return false;  // total internal reflection
   const double cosT = std::sqrt(1.0 - sin2T);
-  out = normalize(d * eta + n * (eta * cosI - cosT));
+  // Unit in, unit out: no renormalisation needed (callers normalise once at the end).
+  out = d * eta + n * (eta * cosI - cosT);
   return true;
 }
 
@@ -93,7 +94,7 @@ std::optional<LensRay> LensSystem::traceFromFilm(const LensRay& ray, double wave
     if (!(d.z < 0.0)) return std::nullopt;  // turned back toward the film
   }
   if (!isFinite(o) || !isFinite(d)) return std::nullopt;
-  return LensRay{o, d};
+  return LensRay{o, normalize(d)};
 }
 
 std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray, double wavelengthNm,
@@ -114,7 +115,7 @@ std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray, double wav
     if (!(d.z > 0.0)) return std::nullopt;
   }
   if (!isFinite(o) || !isFinite(d)) return std::nullopt;
-  return LensRay{o, d};
+  return LensRay{o, normalize(d)};
 }
 
 }  // namespace lensrt
