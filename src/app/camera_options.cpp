@@ -1,0 +1,300 @@
+#include "app/camera_options.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "camera/lens_camera.h"
+#include "camera/pinhole_camera.h"
+#include "camera/thick_lens_camera.h"
+#include "camera/thin_lens_camera.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "optics/focus.h"
+#include "optics/lens_readers.h"
+#include "optics/paraxial.h"
+
+namespace lensrt {
+namespace {
+
+std::optional<double> parseDouble(std::string_view s) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+const std::map<std::string, Vec2d>& sensorNames() {
+  static const std::map<std::string, Vec2d> names{
+      {"full-frame", {36.0, 24.0}}, {"aps-c", {23.6, 15.6}}, {"mft", {17.3, 13.0}}, {"1in", {13.2, 8.8}}};
+  return names;
+}
+
+// A CLI11 check from a parser that throws ValidationError("--flag: why").
+template <class Parse>
+CLI::Validator checkWith(Parse parse, const std::string& description) {
+  return CLI::Validator(
+      [parse](std::string& text) -> std::string {
+        try {
+          parse(text);
+          return "";
+        } catch (const CLI::ValidationError& e) {
+          const std::string what = e.what();
+          const std::size_t colon = what.find(": ");
+          return colon == std::string::npos ? what : what.substr(colon + 2);
+        }
+      },
+      description);
+}
+
+// "auto" -> nullopt; "inf"/"infinity" -> infinity; else positive metres.
+std::optional<double> parseFocus(const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  if (text == "inf" || text == "infinity") return kInfinity;
+  const auto v = parseDouble(text);
+  if (!v || !(*v > 0.0))
+    throw CLI::ValidationError("--focus",
+                               "expected a distance in metres > 0, auto or inf, got '" + text + "'");
+  return *v;
+}
+
+Vec2d parseFocusPixel(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  const auto x = comma == std::string::npos ? std::nullopt : parseDouble(text.substr(0, comma));
+  const auto y = comma == std::string::npos ? std::nullopt : parseDouble(text.substr(comma + 1));
+  if (!x || !y) throw CLI::ValidationError("--focus-pixel", "expected X,Y in pixels, got '" + text + "'");
+  return {*x, *y};
+}
+
+std::string metresText(double m) {
+  return std::isinf(m) ? "inf" : fmt::format("{:.4g}", m);
+}
+
+}  // namespace
+
+Vec2d parseSensor(const std::string& text) {
+  if (const auto it = sensorNames().find(text); it != sensorNames().end()) return it->second;
+  const std::size_t x = text.find_first_of("xX");
+  const auto w = x == std::string::npos ? std::nullopt : parseDouble(text.substr(0, x));
+  const auto h = x == std::string::npos ? std::nullopt : parseDouble(text.substr(x + 1));
+  if (!w || !h || !(*w > 0.0) || !(*h > 0.0) || *w > 1000.0 || *h > 1000.0)
+    throw CLI::ValidationError(
+        "--sensor", "expected WxH in mm (e.g. 36x24) or full-frame, aps-c, mft, 1in; got '" + text + "'");
+  return {*w, *h};
+}
+
+double parseShutter(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  std::optional<double> v;
+  if (slash == std::string::npos) {
+    v = parseDouble(text);
+  } else {
+    const auto a = parseDouble(text.substr(0, slash)), b = parseDouble(text.substr(slash + 1));
+    if (a && b && *b > 0.0) v = *a / *b;
+  }
+  if (!v || !(*v > 0.0) || *v > 1e6)
+    throw CLI::ValidationError("--shutter",
+                               "expected a time in seconds > 0 (e.g. 0.01 or 1/100), got '" + text + "'");
+  return *v;
+}
+
+void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
+#ifdef LENSRT_LENS_DIR
+  if (o.lensDir.empty()) o.lensDir = LENSRT_LENS_DIR;
+#endif
+  cmd.add_option("--camera", o.model,
+                 "camera model: pinhole, thin (ideal thin lens), thick (the lens's paraxial model) or lens "
+                 "(traced through every element of --lens); default pinhole")
+      ->check(CLI::IsMember({"pinhole", "thin", "thick", "lens"}));
+  cmd.add_option("--lens", o.lens,
+                 "lens prescription: a .dat/.lens/.json file or a library name, e.g. --lens dgauss-50mm; the "
+                 "thin, thick and pinhole models then derive from it");
+  cmd.add_option("--fstop", o.fNumber, "f-number N, e.g. --fstop 2.8 (default: the lens wide open, else 2.8)")
+      ->check(CLI::Range(0.5, 1024.0));
+  cmd.add_option("--focus", o.focus,
+                 "focus distance in metres from the entrance pupil, 'auto' (what the centre pixel, or "
+                 "--focus-pixel, sees) or 'inf'; default auto")
+      ->check(checkWith(parseFocus, "METRES|auto|inf"));
+  cmd.add_option("--focus-pixel", o.focusPixel, "pixel X,Y that --focus auto focuses on, e.g. 320,180")
+      ->check(checkWith(parseFocusPixel, "X,Y"));
+  cmd.add_option(
+         "--sensor", o.sensor,
+         "sensor size WxH in mm or full-frame (36x24), aps-c (23.6x15.6), mft (17.3x13), 1in (13.2x8.8); "
+         "cropped to the image's aspect ratio; default full-frame")
+      ->check(checkWith(parseSensor, "WxH|NAME"));
+  cmd.add_option("--blades", o.blades,
+                 "aperture blades: 0 for a round aperture, else 3..64 (a regular polygon)")
+      ->check(CLI::Range(0, 64) & CLI::Validator(
+                                      [](std::string& s) -> std::string {
+                                        return s == "1" || s == "2"
+                                                   ? "an aperture needs 0 or at least 3 blades"
+                                                   : "";
+                                      },
+                                      ""));
+  cmd.add_option("--blade-rotation", o.bladeRotationDegrees,
+                 "rotation of the blade polygon in degrees, e.g. 15")
+      ->check(CLI::Range(-360.0, 360.0));
+  cmd.add_option("--focal-length", o.focalLengthMm,
+                 "focal length in mm: without --lens the thin lens's and pinhole's (default: from the glTF "
+                 "camera's field of view); with --lens the design is scaled to it")
+      ->check(CLI::Range(0.1, 10000.0));
+  cmd.add_option("--exposure", o.exposure,
+                 "normalized (an ideal lens records the scene radiance on axis at any f-number; default) or "
+                 "physical (exposure H = E t, 1.0 = ISO 12232 saturation: value = 683 E t ISO / 78)")
+      ->check(CLI::IsMember({"normalized", "physical"}));
+  cmd.add_option("--shutter", o.shutter,
+                 "shutter time in seconds for --exposure physical, e.g. 1/125 (default 1/100)")
+      ->check(checkWith(parseShutter, "SECONDS"));
+  cmd.add_option("--iso", o.iso, "ISO speed for --exposure physical (default 100)")
+      ->check(CLI::Range(1.0, 1e7));
+}
+
+FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {
+  const Vec2d sensor = parseSensor(options.sensor);
+  FilmGeometry f;
+  f.width = width;
+  f.height = height;
+  const double aspect = double(width) / double(height);
+  if (aspect >= sensor.x / sensor.y) {
+    f.sensorWidthMm = sensor.x;
+    f.sensorHeightMm = sensor.x / aspect;
+  } else {
+    f.sensorHeightMm = sensor.y;
+    f.sensorWidthMm = sensor.y * aspect;
+  }
+  return f;
+}
+
+std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& gltf, FilmGeometry rasterFilm,
+                                   const HitDistance& hitDistance, Warnings& warnings) {
+  const FilmGeometry film = cameraFilm(o, rasterFilm.width, rasterFilm.height);
+  const Transform& worldFromCamera = gltf.worldFromCamera;
+  if (gltf.orthographic)
+    warnings.warn("camera '" + gltf.name + "' is orthographic; rendering it in perspective");
+
+  // Exposure.
+  Exposure exposure;
+  exposure.mode = o.exposure == "physical" ? ExposureMode::Physical : ExposureMode::Normalized;
+  if (!o.shutter.empty()) exposure.shutterSeconds = parseShutter(o.shutter);
+  if (o.iso) exposure.iso = *o.iso;
+  if (exposure.mode == ExposureMode::Normalized && (!o.shutter.empty() || o.iso))
+    warnings.warn("--shutter and --iso only apply with --exposure physical; ignored");
+
+  // The lens, scaled to --focal-length when both are given.
+  std::optional<LensPrescription> lens;
+  if (!o.lens.empty()) {
+    lens = loadLens(findLens(o.lens, o.lensDir));
+    if (o.focalLengthMm) *lens = lens->scaled(*o.focalLengthMm / computeParaxial(*lens).efl);
+  } else if (o.model == "thick" || o.model == "lens") {
+    throw CLI::ValidationError("--lens", "--camera " + o.model + " needs a lens, e.g. --lens dgauss-50mm");
+  }
+  const std::optional<ParaxialData> paraxial = lens ? std::optional(computeParaxial(*lens)) : std::nullopt;
+  const double fNumber = o.fNumber ? *o.fNumber : paraxial ? paraxial->fNumber : 2.8;
+  const ApertureShape aperture{o.blades, o.bladeRotationDegrees};
+
+  // Focal length and the infinity-focus field of view without a lens.
+  const double yfovGltf = gltf.yfov;
+  const double focalMm = paraxial          ? paraxial->efl
+                         : o.focalLengthMm ? *o.focalLengthMm
+                                           : 0.5 * film.sensorHeightMm / std::tan(0.5 * yfovGltf);
+  const double yfovInfinity =
+      paraxial || o.focalLengthMm ? 2.0 * std::atan(0.5 * film.sensorHeightMm / focalMm) : yfovGltf;
+
+  // Focus: what the chosen pixel sees, measured along the axis.
+  std::optional<double> focus = parseFocus(o.focus);
+  if (!o.focusPixel.empty() && focus)
+    throw CLI::ValidationError("--focus-pixel", "only applies with --focus auto");
+  const bool needsFocus = o.model != "pinhole" || lens.has_value();
+  if (!focus && needsFocus) {
+    Vec2d pixel{film.width / 2.0, film.height / 2.0};
+    if (!o.focusPixel.empty()) {
+      pixel = parseFocusPixel(o.focusPixel);
+      if (pixel.x < 0 || pixel.y < 0 || pixel.x >= film.width || pixel.y >= film.height)
+        throw CLI::ValidationError("--focus-pixel", fmt::format("{},{} is outside the {}x{} image", pixel.x,
+                                                                pixel.y, film.width, film.height));
+      pixel = {pixel.x + 0.5, pixel.y + 0.5};
+    }
+    const PinholeCamera aim(worldFromCamera, film, yfovInfinity);
+    CameraSample s;
+    s.film = {float(pixel.x), float(pixel.y)};
+    const auto ray = aim.generateRay(s);
+    const std::optional<double> hit = hitDistance && ray ? hitDistance(ray->ray) : std::nullopt;
+    if (hit && *hit > 0.0 && std::isfinite(*hit)) {
+      // The pinhole ray's direction in camera space has z = -1: axial distance = t cos.
+      const double tanX =
+          (2.0 * pixel.x / film.width - 1.0) * std::tan(0.5 * yfovInfinity) * film.width / film.height;
+      const double tanY = (1.0 - 2.0 * pixel.y / film.height) * std::tan(0.5 * yfovInfinity);
+      focus = *hit / std::sqrt(1.0 + tanX * tanX + tanY * tanY);
+    } else {
+      warnings.warn("--focus auto: the focus pixel sees no surface; focusing at infinity");
+      focus = kInfinity;
+    }
+    // Too close for the optics: focus as close as they can.
+    const double closestM =
+        lens ? 1.001 * closestFocusDistanceMm(LensSystem(*lens)) / 1000.0 : 1.001 * focalMm / 1000.0;
+    if (*focus < closestM) {
+      warnings.warn(
+          fmt::format("--focus auto: the surface at {:.4g} m is closer than the lens focuses; using {:.4g} m",
+                      *focus, closestM));
+      focus = closestM;
+    }
+  }
+  const double focusM = focus.value_or(kInfinity);
+  if (lens && !std::isinf(focusM) && focusM * 1000.0 <= closestFocusDistanceMm(LensSystem(*lens)))
+    throw CLI::ValidationError(
+        "--focus", fmt::format("{} cannot focus at {:g} m (closest: {:.4g} m)", lens->name, focusM,
+                               closestFocusDistanceMm(LensSystem(*lens)) / 1000.0));
+
+  const std::string lensName = lens ? lens->name : "";
+  try {
+    if (o.model == "pinhole") {
+      const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
+      return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
+    }
+    if (o.model == "thin") {
+      ThinLensParams p;
+      p.focalLengthMm = focalMm;
+      p.fNumber = fNumber;
+      p.focusMetres = focusM;
+      p.aperture = aperture;
+      p.lensName = lensName;
+      return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
+    }
+    if (o.model == "thick") {
+      if (o.fNumber && *o.fNumber < paraxial->fNumber * (1 - 1e-9))
+        warnings.warn(
+            fmt::format("{}: f/{:g} is wider than the lens allows; the thick lens opens to it anyway",
+                        lensName, *o.fNumber));
+      ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
+      p.aperture = aperture;
+      p.lensName = lensName;
+      return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
+    }
+    LensCameraParams p;
+    p.fNumber = fNumber;
+    p.focusMetres = focusM;
+    p.aperture = aperture;
+    return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--focus", e.what());
+  }
+}
+
+ImageMetadata cameraMetadata(const Camera& camera) {
+  const CameraInfo i = camera.info();
+  const FilmGeometry& f = camera.film();
+  return {
+      {"lensrt:camera_model", i.model},
+      {"lensrt:lens", i.lens.empty() ? "none" : i.lens},
+      {"lensrt:f_number", i.fNumber > 0 ? fmt::format("{:.3g}", i.fNumber) : "none"},
+      {"lensrt:focus_m", i.focusMetres > 0 ? metresText(i.focusMetres) : "none"},
+      {"lensrt:focal_length_mm", fmt::format("{:.4g}", i.focalLengthMm)},
+      {"lensrt:sensor_mm", fmt::format("{:.4g}x{:.4g}", f.sensorWidthMm, f.sensorHeightMm)},
+      {"lensrt:exposure", i.exposure},
+  };
+}
+
+}  // namespace lensrt
