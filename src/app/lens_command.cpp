@@ -216,6 +216,7 @@ CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
     subs.emplace_back(lensApp->get_subcommands({}).at(before), std::move(action));
   };
   add(addLensInfoCommand);
+  add(addLensDiagramCommand);
   add(addLensPlotCommand);
   return [subs] {
     for (const auto& [sub, action] : subs)

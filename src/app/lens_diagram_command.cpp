@@ -1,0 +1,25 @@
+// `lensrt lens diagram FILE -o lens.svg`: the lens drawn with ray fans.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "app/lens_diagram.h"
+#include "app/lens_plot_setup.h"
+#include "app/lens_subcommands.h"
+
+namespace lensrt {
+
+CommandAction addLensDiagramCommand(CLI::App& lensApp, const CommandContext&) {
+  auto options = std::make_shared<LensViewOptions>();
+  CLI::App* diagram = lensApp.add_subcommand(
+      "diagram", "Draw the lens to scale with ray fans, stop, pupils and cardinal points (SVG)");
+  addLensViewOptions(*diagram, *options);
+  return [options] {
+    Warnings warnings([](const std::string& w) { fmt::print(stderr, "lensrt: warning: {}\n", w); });
+    const LensView view = prepareLensView(*options, warnings);
+    drawLensDiagram(view).write(options->output);
+    return 0;
+  };
+}
+
+}  // namespace lensrt
