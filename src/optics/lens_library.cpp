@@ -58,6 +58,7 @@ std::filesystem::path findLens(const std::string& nameOrPath, const std::filesys
   if (std::filesystem::is_regular_file(nameOrPath, ec)) return nameOrPath;
   // A bare name (no directory part) is looked up in the library.
   if (std::filesystem::path(nameOrPath).parent_path().empty()) {
+    if (std::filesystem::is_regular_file(lensDir / nameOrPath, ec)) return lensDir / nameOrPath;
     for (const char* ext : kExtensions) {
       const std::filesystem::path candidate = lensDir / (nameOrPath + ext);
       if (std::filesystem::is_regular_file(candidate, ec)) return candidate;

@@ -23,6 +23,7 @@ LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(
     TraceSurface t;
     t.z = z;
     t.radius = s.radius;
+    t.invRadius = s.radius != 0.0 ? 1.0 / s.radius : 0.0;
     t.apertureRadius = s.apertureDiameter / 2.0;
     t.apertureRadius2 = t.apertureRadius * t.apertureRadius;
     t.isStop = s.isStop;
@@ -68,7 +69,7 @@ bool LensSystem::intersect(const TraceSurface& s, const Vec3d& o, const Vec3d& d
     else
       return false;
     hit = p + d * t;
-    normal = Vec3d{hit.x, hit.y, hit.z - R} / R;
+    normal = Vec3d{hit.x, hit.y, hit.z - R} * s.invRadius;
     if (dot(normal, d) > 0.0) normal = -normal;
   }
   if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return false;

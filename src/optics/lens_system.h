@@ -51,6 +51,7 @@ class LensSystem {
   struct TraceSurface {
     double z = 0.0;
     double radius = 0.0;  // 0 = flat
+    double invRadius = 0.0;
     double apertureRadius = 0.0;
     double apertureRadius2 = 0.0;
     bool isStop = false;
