@@ -10,9 +10,11 @@ namespace {
 
 // Offset along the geometric normal, scaled to the coordinates' magnitude so
 // that the next ray does not re-hit its own surface through rounding.
+float offsetScale(const Vec3f& p) {
+  return 2e-4f * std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+}
 Vec3f offsetOrigin(const Vec3f& p, const Vec3f& n) {
-  const float scale = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  return p + n * (2e-4f * scale);
+  return p + n * offsetScale(p);
 }
 
 }  // namespace
@@ -76,8 +78,16 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
         const Rgb f = bsdf.eval(woLocal, wiLocal) * std::max(0.0f, wiLocal.z);
         if (maxComponent(f) > 0) {
           Ray shadow{origin, ls->wi, 0.0f, kInfinityF};
-          if (std::isfinite(ls->distance))
-            shadow.tMax = length(hit->position + ls->wi * ls->distance - origin) * (1 - 1e-4f);
+          if (std::isfinite(ls->distance)) {
+            // Aim from the offset origin at the light point itself, and stop
+            // short of it by the same offset so the emitter does not shadow itself.
+            const Vec3f target = hit->position + ls->wi * ls->distance;
+            const Vec3f d = target - origin;
+            const float len = length(d);
+            shadow.direction = d / len;
+            shadow.tMax = len * (1 - 1e-4f) - offsetScale(target);
+          }
+
           if (!scene_.occluded(shadow)) {
             const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(woLocal, wiLocal));
             out.radiance += beta * f * ls->radiance * (w / ls->pdf);
