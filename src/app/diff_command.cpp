@@ -153,6 +153,17 @@ void printText(const DiffOptions& o, const DiffReport& r, const std::optional<No
   }
 }
 
+// Reports why no comparison was made: on stderr, and with --json also as
+// JSON on stdout so scripts always get a document.
+int refuse(const DiffOptions& o, int status, const std::string& message) {
+  fmt::print(stderr, "lensrt: error: {}\n", message);
+  if (o.json)
+    fmt::print(
+        "{}\n",
+        nlohmann::json{{"a", o.fileA}, {"b", o.fileB}, {"error", message}, {"exitStatus", status}}.dump(2));
+  return status;
+}
+
 int runDiff(const DiffOptions& o) {
   ImageMetadata metaA, metaB;
   Image a, b;
@@ -160,26 +171,22 @@ int runDiff(const DiffOptions& o) {
     a = readImage(o.fileA, &metaA);
     b = readImage(o.fileB, &metaB);
   } catch (const InputError& e) {
-    fmt::print(stderr, "lensrt: error: {}\n", e.what());
-    return kExitUnreadable;
+    return refuse(o, kExitUnreadable, e.what());
   }
-  if (const auto why = incomparableReason(a, b)) {
-    fmt::print(stderr, "lensrt: error: \"{}\" and \"{}\" are not comparable: {}\n", o.fileA, o.fileB, *why);
-    return kExitIncomparable;
-  }
+  if (const auto why = incomparableReason(a, b))
+    return refuse(o, kExitIncomparable,
+                  fmt::format("\"{}\" and \"{}\" are not comparable: {}", o.fileA, o.fileB, *why));
 
   const DiffReport report = diffImages(a, b, o.thresholds);
   DiffVerdict verdict = report.verdict;
   std::optional<NoiseAwareReport> noise;
   NoiseAwareOptions noiseOptions;
   if (o.noiseAware) {
-    if (!hasVarianceChannels(a) || !hasVarianceChannels(b)) {
-      fmt::print(stderr,
-                 "lensrt: error: \"{}\" and \"{}\" are not comparable noise-aware: both need R,G,B and "
-                 "variance.R/G/B channels (lensrt render --aov variance)\n",
-                 o.fileA, o.fileB);
-      return kExitIncomparable;
-    }
+    if (!hasVarianceChannels(a) || !hasVarianceChannels(b))
+      return refuse(o, kExitIncomparable,
+                    fmt::format("\"{}\" and \"{}\" are not comparable noise-aware: both need R,G,B and "
+                                "variance.R/G/B channels (lensrt render --aov variance)",
+                                o.fileA, o.fileB));
     noiseOptions = o.noise;
     noiseOptions.absoluteThreshold = o.thresholds.fail;
     noiseOptions.samplesA = o.spp > 0 ? o.spp : sppFromMetadata(metaA).value_or(0);
@@ -265,9 +272,14 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub->add_option(
-      "--heatmap", o->heatmap,
-      "Write a false-colour map of the per-pixel max |A-B| (noise-aware: max |t|) with a labelled "
-      "colour bar (.png/.jpg/.exr)");
+         "--heatmap", o->heatmap,
+         "Write a false-colour map of the per-pixel max |A-B| (noise-aware: max |t|) with a labelled "
+         "colour bar (.png/.jpg/.exr)")
+      ->check(CLI::Validator(
+          [](std::string& file) {
+            return isWritableImageExtension(file) ? std::string() : "expects a .png, .jpg or .exr file";
+          },
+          "IMAGE"));
   sub->add_option("--heatmap-max", o->heatmapMax,
                   "Value at the top of the heatmap scale (default: the max error; noise-aware: twice the |t| "
                   "threshold)")

@@ -42,7 +42,13 @@ TEST_F(DiffCommand, IncomparableAndUnreadable) {
   const std::string small = (dir / "small.exr").string();
   writeImage(small, test::constantImage(4, 6, {"R", "G", "B"}, 0.5f), {});
   EXPECT_EQ(status(shellQuote(a) + " " + shellQuote(small)), 3);
-  EXPECT_EQ(status(shellQuote(a) + " " + shellQuote((dir / "missing.exr").string())), 4);
+  // Refusals still give a JSON document with --json.
+  const auto missing =
+      runCommand(diffCommand(shellQuote(a) + " " + shellQuote((dir / "missing.exr").string()) + " --json"));
+  EXPECT_EQ(missing.status, 4);
+  const auto j = nlohmann::json::parse(missing.output);
+  EXPECT_EQ(j["exitStatus"], 4);
+  EXPECT_NE(j["error"].get<std::string>().find("missing.exr"), std::string::npos);
 }
 
 TEST_F(DiffCommand, JsonCarriesTheFigures) {
