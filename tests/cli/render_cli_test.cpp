@@ -149,6 +149,40 @@ TEST(RenderCli, UnwritableOutputIsRejectedBeforeRendering) {
   EXPECT_EQ(cli::readFile(dir / "keep.txt"), kPrecious);
 }
 
+TEST(RenderCli, LatLongEnvironmentMapLightsTheScene) {
+  const TempDir dir;
+  // A uniform sky of radiance 2 as a lat-long EXR: every background pixel must
+  // read exactly 2, and a white-ish triangle lit only by it must be lit.
+  Image sky(16, 8, {"R", "G", "B"});
+  for (float& v : sky.pixels) v = 2.0f;
+  writeImage(dir / "sky.exr", sky, {});
+  cli::writeFile(dir / "bad.exr", "not an image");
+  const float tri[9] = {-1, -1, 0, 1, -1, 0, 0, 1, 0};
+  cli::writeFile(dir / "tri.gltf", cli::triangleGltf(tri, {0, 1, 2}));
+  const RunResult ok = runLensrt({"render", (dir / "tri.gltf").string(), "--res", "24x24", "--spp", "2",
+                                  "--env", (dir / "sky.exr").string(), "-q", "-o", (dir / "a.exr").string()});
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  const Image img = readImage(dir / "a.exr");
+  const int r = img.channelIndex("R"), a = img.channelIndex("A");
+  int background = 0, lit = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      if (img.at(x, y, a) == 0.0f) {
+        EXPECT_EQ(img.at(x, y, r), 2.0f);
+        ++background;
+      } else if (img.at(x, y, a) == 1.0f && img.at(x, y, r) > 0.1f) {
+        ++lit;
+      }
+    }
+  EXPECT_GT(background, 0);
+  EXPECT_GT(lit, 0);
+  const RunResult bad = runLensrt({"render", (dir / "tri.gltf").string(), "--env", (dir / "bad.exr").string(),
+                                   "-q", "-o", (dir / "b.exr").string()});
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("bad.exr"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.exr"));
+}
+
 // Optional: the Khronos samples in ../shared (skipped when absent).
 TEST(RenderCli, EverySharedSampleSceneRendersWithoutNaN) {
   const std::filesystem::path scenes = std::filesystem::path(LENSRT_SHARED_DIR) / "scenes";
