@@ -1,11 +1,13 @@
 #include "app/lens_plot_setup.h"
 
 #include <fmt/core.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 
 #include "core/constants.h"
+#include "core/error.h"
 #include "optics/focus.h"
 #include "optics/lens_readers.h"
 
@@ -53,8 +55,16 @@ void addLensViewOptions(CLI::App& command, LensViewOptions& o) {
 }
 
 void checkSvgOutput(const std::string& output) {
-  if (std::filesystem::path(output).extension() != ".svg")
+  const std::filesystem::path file(output);
+  if (file.extension() != ".svg")
     throw CLI::ValidationError("--output", "expected a .svg file, got '" + output + "'");
+  // Fail before the tracing, not after: the directory must take a new file.
+  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw InputError(output, "cannot write: directory '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw InputError(output, "cannot write: directory '" + dir.string() + "' is not writable");
 }
 
 double LensView::halfDiagonalMm() const {

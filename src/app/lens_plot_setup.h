@@ -39,7 +39,8 @@ struct LensView {
 // down and focuses the lens (InputError: exit 1).
 LensView prepareLensView(const LensViewOptions& options, Warnings& warnings);
 
-// The output must be an .svg path.
+// The output must be an .svg path (CLI::ValidationError) in an existing,
+// writable directory (InputError).
 void checkSvgOutput(const std::string& output);
 
 }  // namespace lensrt
