@@ -22,9 +22,15 @@ class InputError : public std::runtime_error {
 
  private:
   static std::string format(const std::string& file, const std::string& message, int line) {
+    if (file.empty()) return message;
     std::string s = file;
-    if (line > 0) s += ":" + std::to_string(line);
-    return s.empty() ? message : s + ": " + message;
+    if (line > 0) {
+      s += ':';
+      s += std::to_string(line);
+    }
+    s += ": ";
+    s += message;
+    return s;
   }
   std::string file_;
   std::string message_;
