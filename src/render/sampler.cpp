@@ -1,6 +1,6 @@
 #include "render/sampler.h"
 
-#include <bit>
+#include <array>
 
 namespace lensrt {
 namespace {
@@ -34,11 +34,26 @@ std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
 std::uint32_t sobol0(std::uint32_t index) {
   return reverseBits(index);
 }
+// The generator matrix applied a byte at a time: table[k][b] is the XOR of the
+// direction numbers selected by byte b of the index at byte position k (the
+// shuffled indices use all 32 bits, so a bit loop would run 32 times).
+using SobolTable = std::array<std::array<std::uint32_t, 256>, 4>;
+constexpr SobolTable makeSobol1Table() {
+  std::array<std::uint32_t, 32> direction{};
+  std::uint32_t v = 1u << 31;
+  for (int i = 0; i < 32; ++i, v ^= v >> 1) direction[i] = v;
+  SobolTable t{};
+  for (int k = 0; k < 4; ++k)
+    for (int b = 0; b < 256; ++b)
+      for (int i = 0; i < 8; ++i)
+        if (b & (1 << i)) t[k][b] ^= direction[8 * k + i];
+  return t;
+}
+constexpr SobolTable kSobol1 = makeSobol1Table();
+
 std::uint32_t sobol1(std::uint32_t index) {
-  std::uint32_t result = 0;
-  for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
-    if (index & 1u) result ^= v;
-  return result;
+  return kSobol1[0][index & 0xff] ^ kSobol1[1][(index >> 8) & 0xff] ^ kSobol1[2][(index >> 16) & 0xff] ^
+         kSobol1[3][index >> 24];
 }
 
 float toUnitFloat(std::uint32_t x) {
@@ -67,7 +82,10 @@ Sampler::Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sam
     : pixelSeed_(hashCombine(hash64(seed), hash64(pixelIndex))), sampleIndex_(sampleIndex) {}
 
 float Sampler::get1D(std::uint32_t dimension) const {
-  return get2D(dimension).x;
+  // The x coordinate of get2D(dimension), without computing y.
+  const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);
+  const std::uint32_t index = owenScramble(sampleIndex_, hashCombine(dimSeed, 0x51ed270bu));
+  return toUnitFloat(owenScramble(sobol0(index), hashCombine(dimSeed, 0x68bc21ebu)));
 }
 
 Vec2f Sampler::get2D(std::uint32_t dimension) const {
