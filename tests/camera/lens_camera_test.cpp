@@ -35,7 +35,8 @@ LensCamera makeLens(double fNumber, double focusM, ApertureShape shape = {}) {
 // Images (raster) of a camera-space point through `samples` points of the
 // rear-vertex plane drawn from the pupil bounds of the film point at `guess`
 // (those the lens blocks are skipped).
-std::vector<Vec2d> imagesOf(const LensCamera& cam, const Vec3d& p, Vec2d guess, int samples, std::uint64_t seed) {
+std::vector<Vec2d> imagesOf(const LensCamera& cam, const Vec3d& p, Vec2d guess, int samples,
+                            std::uint64_t seed) {
   SplitMix64 rng(seed);
   const Vec2d up = uprightSensorPointMm(cam.film(), {float(guess.x), float(guess.y)});
   std::vector<Vec2d> out;
@@ -43,7 +44,9 @@ std::vector<Vec2d> imagesOf(const LensCamera& cam, const Vec3d& p, Vec2d guess, 
     const auto s = cam.bounds().sample({-up.x, -up.y}, {rng.uniform(), rng.uniform()});
     if (!s) continue;
     const Vec2d pupil{s->point.x, s->point.y};
-    const auto rayAt = [&](Vec2d raster) { return cam.traceThrough({float(raster.x), float(raster.y)}, pupil); };
+    const auto rayAt = [&](Vec2d raster) {
+      return cam.traceThrough({float(raster.x), float(raster.y)}, pupil);
+    };
     if (const auto img = imageOf(rayAt, p, guess)) out.push_back(*img);
   }
   return out;
