@@ -58,7 +58,11 @@ bool isGlb(const std::filesystem::path& file, const std::string& name) {
 
 // nlohmann's parse errors read "[json.exception.parse_error.101] parse error at
 // line 3, column 7: what"; keep the line for InputError and the rest as text.
-[[noreturn]] void throwParseError(const std::string& name, const std::string& err) {
+[[noreturn]] void throwParseError(const std::string& name, const std::string& fullErr) {
+  // nlohmann quotes the last token read, which in a truncated file can be a
+  // whole data URI: keep the message short, and libstdc++'s std::regex (one
+  // stack frame per character) away from long text - it overflowed the stack.
+  const std::string err = fullErr.size() > 300 ? fullErr.substr(0, 300) + "..." : fullErr;
   static const std::regex json(
       R"(\[json\.exception\.[a-z_.0-9]+\] parse error at line (\d+), column (\d+): (.*))");
   std::smatch m;
