@@ -55,6 +55,11 @@ LensPrescription parseJsonLens(std::string_view text, const std::string& file) {
     // nlohmann prefixes "[json.exception.parse_error.101] parse error at line 2, column 3: ".
     if (const std::size_t colon = what.find(": "); colon != std::string::npos) what = what.substr(colon + 2);
     throw InputError(file, "invalid JSON: " + what, lineOfByte(text, e.byte > 0 ? e.byte - 1 : 0));
+  } catch (const json::out_of_range& e) {
+    // A number too large for a double (e.g. 1e999) is out_of_range.406, not a parse error.
+    std::string what = e.what();
+    if (const std::size_t bracket = what.find("] "); bracket != std::string::npos) what = what.substr(bracket + 2);
+    throw InputError(file, "invalid JSON: " + what);
   }
   if (!doc.is_object()) throw InputError(file, "a lens file must hold a JSON object");
   rejectUnknownKeys(
