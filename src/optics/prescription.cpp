@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "core/error.h"
+#include "optics/paraxial.h"
 
 namespace lensrt {
 
@@ -105,6 +107,13 @@ void validatePrescription(const LensPrescription& lens) {
   }
   const double length = lens.length();
   if (length > kMaxLengthMm) fail(nullptr, -1, "total length " + fmtMm(length) + " is absurd");
+  // Focus, pupils and every camera model need a focal length; computeParaxial's
+  // std::domain_error would otherwise reach the user without the file name.
+  try {
+    computeParaxial(lens);
+  } catch (const std::domain_error& e) {
+    fail(nullptr, -1, e.what());
+  }
 }
 
 }  // namespace lensrt
