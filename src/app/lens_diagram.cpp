@@ -46,8 +46,8 @@ struct DrawnRay {
   bool passed = false;
 };
 
-DrawnRay traceForDrawing(const LensSystem& lens, const FieldPoint& field, double aimX, double zLeft,
-                         double xMax, double filmZ) {
+DrawnRay traceRay(const LensSystem& lens, const FieldPoint& field, double aimX, double zLeft, double xMax,
+                  double filmZ) {
   DrawnRay drawn;
   const LensRay ray = fieldRay(lens, field, {aimX, 0.0});
   // Start at the drawing's left edge, or where the ray enters its top/bottom.
@@ -56,8 +56,6 @@ DrawnRay traceForDrawing(const LensSystem& lens, const FieldPoint& field, double
   if (std::abs(start.x) > xMax && ray.direction.x != 0.0) {
     const double tx = (std::copysign(xMax, start.x) - ray.origin.x) / ray.direction.x;
     if (tx > t) start = ray.origin + ray.direction * tx;
-    // Entering the drawing only past the front of the lens: nothing to show.
-    if (start.z > 0.0) return drawn;
   }
   drawn.points.push_back(start);
   std::vector<Vec3d> path;
@@ -94,6 +92,15 @@ DrawnRay traceForDrawing(const LensSystem& lens, const FieldPoint& field, double
     const double tb = std::max(0.0, (rimZ - from.z) / d.z);
     drawn.points.push_back(from + d * tb);
   }
+  return drawn;
+}
+
+// Rays that would enter the drawing only after their first surface (steep
+// rays blocked outside it) are not drawn at all.
+DrawnRay traceForDrawing(const LensSystem& lens, const FieldPoint& field, double aimX, double zLeft,
+                         double xMax, double filmZ) {
+  DrawnRay drawn = traceRay(lens, field, aimX, zLeft, xMax, filmZ);
+  if (drawn.points.size() < 2 || drawn.points[0].z > drawn.points[1].z) drawn.points.clear();
   return drawn;
 }
 
@@ -218,7 +225,12 @@ Svg drawLensDiagram(const LensView& view) {
   // The aperture stop as a diaphragm: blades from its opening outward.
   {
     const double zs = p.stopZ, as = rx.surfaces[p.stopIndex].apertureDiameter / 2;
-    const double outer = std::max(as * 1.35, as + 0.06 * xMax);
+    // Blades reach out to the barrel: the wider of the neighbouring apertures.
+    double barrel = as * 1.2 + 0.04 * xMax;
+    for (const int k : {p.stopIndex - 1, p.stopIndex + 1})
+      if (k >= 0 && k < static_cast<int>(rx.surfaces.size()))
+        barrel = std::max(barrel, rx.surfaces[k].apertureDiameter / 2 * 1.05);
+    const double outer = barrel;
     svg.beginGroup("id=\"stop\"");
     for (const double sgn : {1.0, -1.0}) {
       svg.line(map(zs, sgn * as), map(zs, sgn * outer), "class=\"stop\"");
@@ -243,6 +255,7 @@ Svg drawLensDiagram(const LensView& view) {
     svg.beginGroup(fmt::format("class=\"fan\" stroke=\"{}\"", fan.colour));
     for (const double aim : aims) {
       const DrawnRay r = traceForDrawing(lens, fan.field, aim, zLo, xMax, filmZ);
+      if (r.points.empty()) continue;
       std::vector<Vec2d> pts;
       for (const Vec3d& q : r.points) pts.push_back(map(q.z, q.x));
       svg.polyline(pts, "class=\"ray\"");
@@ -251,7 +264,7 @@ Svg drawLensDiagram(const LensView& view) {
       const DrawnRay r = traceForDrawing(lens, fan.field, *chief, zLo, xMax, filmZ);
       std::vector<Vec2d> pts;
       for (const Vec3d& q : r.points) pts.push_back(map(q.z, q.x));
-      svg.polyline(pts, "class=\"chief\"");
+      if (!pts.empty()) svg.polyline(pts, "class=\"chief\"");
     }
     // Just outside the passing band on each side: blocked, drawn to where they stop.
     for (const double aim : {band->lo - 0.06 * w - 1e-3, band->hi + 0.06 * w + 1e-3}) {
