@@ -85,9 +85,18 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
   std::string err, warn;
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
                          : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+  // Image problems are reported once, in our words, when a material uses the
+  // image (gltf_materials.cpp); drop tinygltf's own lines about them.
+  const auto aboutImage = [&](const std::string& line) {
+    if (line.find("for image[") != std::string::npos) return true;
+    const std::string notFound = "File not found : ";
+    if (line.rfind(notFound, 0) != 0) return false;
+    return std::any_of(model.images.begin(), model.images.end(),
+                       [&](const tinygltf::Image& im) { return !im.uri.empty() && line.ends_with(im.uri); });
+  };
   std::istringstream lines(warn);
   for (std::string line; std::getline(lines, line);)
-    if (!oneLine(line).empty()) warnings.warn(oneLine(line));
+    if (!oneLine(line).empty() && !aboutImage(line)) warnings.warn(oneLine(line));
   if (!ok) throwParseError(name, err.empty() ? "cannot parse the glTF file" : oneLine(err));
   return model;
 }

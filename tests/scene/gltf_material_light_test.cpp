@@ -146,6 +146,7 @@ TEST(GltfMaterial, MissingOrCorruptImagesWarnAndKeepTheFactor) {
             1u);
   EXPECT_EQ(w.all().count("texture image '#1' could not be decoded; using the material factor only"), 1u);
   EXPECT_EQ(w.all().count("material '#0': texture 2 has no usable image; using the factor only"), 1u);
+  EXPECT_EQ(w.all().size(), 3u);  // nothing more from tinygltf about the same images
 }
 
 TEST(GltfMaterial, BlendWarnsOnceAndRendersAsMask) {
