@@ -90,7 +90,7 @@ std::string plotCss() {
 .grid { stroke: #e3e3e3; stroke-width: 1; }
 .tick { stroke: #333; stroke-width: 1; }
 .frame { fill: none; stroke: #333; stroke-width: 1.2; }
-.legend { font-size: 13px; }
+.legend { font-size: 13px; paint-order: stroke; stroke: white; stroke-width: 3px; stroke-linejoin: round; }
 )";
 }
 
