@@ -9,7 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "app/camera_setup.h"
+#include "app/camera_options.h"
 #include "app/command.h"
 #include "app/render_options.h"
 #include "core/error.h"
@@ -41,6 +41,7 @@ struct RenderArgs {
   std::vector<std::string> aovs;
   int tileSize = 16;
   bool quiet = false;
+  CameraOptions camera;
 };
 
 constexpr int kDefaultWidth = 640, kDefaultHeight = 360;
@@ -103,13 +104,22 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   if (!res || res->height == 0) cam = selectCamera(desc, args.cameraNode, float(width) / float(height));
   const Environment environment = makeEnvironment(envSpec);
 
+  // The scene is built before the camera: --focus auto asks it what the
+  // focus pixel sees.
+  const RenderScene scene(std::move(desc));
+  const HitDistance hitDistance = [&scene](const Ray& ray) -> std::optional<double> {
+    const std::optional<SurfaceHit> hit = scene.intersect(ray);
+    return hit ? std::optional<double>(hit->t) : std::nullopt;
+  };
   std::unique_ptr<Camera> camera;
   try {
-    camera = makeCamera(cam, filmFor(width, height), warnings);
+    FilmGeometry raster;
+    raster.width = width;
+    raster.height = height;
+    camera = makeCamera(args.camera, cam, raster, hitDistance, warnings);
   } catch (const std::invalid_argument& e) {
     throw InputError(args.scene, "camera '" + cam.name + "': " + e.what());
   }
-  const RenderScene scene(std::move(desc));
   const MaterialTable materials(scene.desc());
   const LightSet lights(materials, environment, scene.bounds());
   if (lights.empty() && !args.quiet)
@@ -137,7 +147,7 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // 4. Write.
-  const ImageMetadata metadata{
+  ImageMetadata metadata{
       {"lensrt:camera", camera->describe()},
       {"lensrt:spp", std::to_string(args.spp)},
       {"lensrt:seed", std::to_string(args.seed)},
@@ -148,8 +158,9 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
       {"lensrt:command_line", context.commandLine},
       {"lensrt:nan_samples", std::to_string(out.droppedSamples)},
   };
+  metadata.merge(cameraMetadata(*camera));
   writeImage(args.output, out.image, metadata);
-  if (out.droppedSamples > 0)
+  if (out.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
                args.scene, out.droppedSamples);
   if (!args.quiet)
@@ -212,6 +223,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("--tile", args->tileSize, "tile size in pixels for scheduling (does not change the image)")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
+  addCameraOptions(*cmd, args->camera);
   cmd->add_flag("-q,--quiet", args->quiet, "no progress, warnings or summary on stderr (errors still print)");
   return [args, context]() { return runRender(*args, context); };
 }
