@@ -4,7 +4,7 @@
 // the best time of each and their ratio (target: full lens <= 1.15x pinhole).
 //
 //   bench_cameras [SCENE] [--spp 16] [--res 320x180] [--repeat 3] [--threads 0]
-//                 [camera flags of lensrt render, e.g. --lens dgauss-50mm --fstop 4]
+//                 [--save PREFIX] [camera flags of lensrt render, e.g. --lens dgauss-50mm --fstop 4]
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
@@ -17,6 +17,7 @@
 
 #include "app/camera_options.h"
 #include "core/error.h"
+#include "image/image_io.h"
 #include "render/environment.h"
 #include "render/integrator.h"
 #include "render/lights.h"
@@ -72,6 +73,8 @@ int main(int argc, char** argv) {
   app.add_option("--height", height, "image height")->check(CLI::PositiveNumber);
   app.add_option("--repeat", repeat, "renders per model (the best time counts)")->check(CLI::PositiveNumber);
   app.add_option("--threads", threads, "render threads (0: all)");
+  std::string save;
+  app.add_option("--save", save, "also write PREFIX_pinhole.png and PREFIX_lens.png (previews)");
   addCameraOptions(app, options);
   CLI11_PARSE(app, argc, argv);
 
@@ -105,6 +108,11 @@ int main(int argc, char** argv) {
     for (int i = 0; i < repeat; ++i) {
       bestPinhole = std::min(bestPinhole, cpuSeconds([&] { renderImage(*pinhole, integrator, settings); }));
       bestLens = std::min(bestLens, cpuSeconds([&] { renderImage(*lens, integrator, settings); }));
+    }
+    if (!save.empty()) {
+      writeImage(save + "_pinhole.png", renderImage(*pinhole, integrator, settings).image,
+                 cameraMetadata(*pinhole));
+      writeImage(save + "_lens.png", renderImage(*lens, integrator, settings).image, cameraMetadata(*lens));
     }
     long pinholePassed = 0, lensPassed = 0;
     const double camPinhole = cameraSeconds(*pinhole, spp, pinholePassed);
