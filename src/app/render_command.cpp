@@ -157,6 +157,7 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
       {"lensrt:version", LENSRT_VERSION},
       {"lensrt:command_line", context.commandLine},
       {"lensrt:nan_samples", std::to_string(out.droppedSamples)},
+      {"lensrt:camera_ray_efficiency", fmt::format("{:.4f}", out.cameraRayEfficiency())},
   };
   metadata.merge(cameraMetadata(*camera));
   writeImage(args.output, out.image, metadata);

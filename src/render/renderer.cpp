@@ -23,12 +23,13 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
   RenderOutput out;
   out.image = Image(film.width, film.height, filmChannels(settings.aovs));
   std::atomic<std::uint64_t> dropped{0};
+  std::atomic<std::uint64_t> blocked{0};
   const std::uint32_t spp = std::uint32_t(settings.samplesPerPixel);
 
   const auto renderTile = [&](int t) {
     const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
     const int x1 = std::min(x0 + tile, film.width), y1 = std::min(y0 + tile, film.height);
-    std::uint64_t tileDropped = 0;
+    std::uint64_t tileDropped = 0, tileBlocked = 0;
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         const std::uint64_t pixelIndex = std::uint64_t(y) * std::uint64_t(film.width) + std::uint64_t(x);
@@ -44,6 +45,7 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
           const std::optional<CameraRay> cr = camera.generateRay(cs);
           if (!cr) {
             acc.addBlocked();
+            ++tileBlocked;
             continue;
           }
           acc.add(integrator.trace(cr->ray, sampler), cr->weight);
@@ -52,6 +54,7 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
         tileDropped += acc.droppedSamples();
       }
     dropped.fetch_add(tileDropped, std::memory_order_relaxed);
+    blocked.fetch_add(tileBlocked, std::memory_order_relaxed);
     if (progress) progress->add(std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * spp);
   };
 
@@ -63,6 +66,8 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
     });
   });
   out.droppedSamples = dropped.load();
+  out.cameraSamples = std::uint64_t(film.width) * std::uint64_t(film.height) * spp;
+  out.blockedCameraRays = blocked.load();
   return out;
 }
 

@@ -25,6 +25,12 @@ struct RenderSettings {
 struct RenderOutput {
   Image image;                       // channels per filmChannels(aovs), size of camera.film()
   std::uint64_t droppedSamples = 0;  // NaN / infinite radiance
+  std::uint64_t cameraSamples = 0;      // width x height x spp
+  std::uint64_t blockedCameraRays = 0;  // samples the optics blocked (vignetting)
+  // Fraction of camera samples that left the lens into the scene.
+  double cameraRayEfficiency() const {
+    return cameraSamples ? 1.0 - double(blockedCameraRays) / double(cameraSamples) : 1.0;
+  }
 };
 
 // Wavelengths handed to the camera are uniform in this range (nm).
