@@ -1,0 +1,140 @@
+// The camera flags: parsing, the sensor crop, and how the factory derives the
+// simpler models from a lens (thin: EFL and its f-number; pinhole: the lens's
+// field of view at that focus) and focuses automatically.
+#include "app/camera_options.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "camera/pinhole_camera.h"
+#include "camera/thin_lens_camera.h"
+#include "core/constants.h"
+#include "optics/lens_readers.h"
+#include "optics/paraxial.h"
+
+namespace lensrt {
+namespace {
+
+CameraOptions withLens(const std::string& model) {
+  CameraOptions o;
+  o.model = model;
+  o.lens = "dgauss-50mm";
+  o.lensDir = std::string(LENSRT_SOURCE_DIR) + "/lenses";
+  return o;
+}
+
+FilmGeometry raster(int w, int h) {
+  FilmGeometry f;
+  f.width = w;
+  f.height = h;
+  return f;
+}
+
+TEST(CameraOptions, ParsesSensorsAndShutterTimes) {
+  EXPECT_EQ(parseSensor("aps-c"), (Vec2d{23.6, 15.6}));
+  EXPECT_EQ(parseSensor("36x24"), (Vec2d{36, 24}));
+  EXPECT_THROW(parseSensor("36x"), CLI::ValidationError);
+  EXPECT_THROW(parseSensor("big"), CLI::ValidationError);
+  EXPECT_DOUBLE_EQ(parseShutter("1/250"), 0.004);
+  EXPECT_DOUBLE_EQ(parseShutter("2"), 2.0);
+  EXPECT_THROW(parseShutter("0"), CLI::ValidationError);
+  try {
+    parseShutter("soon");
+    FAIL();
+  } catch (const CLI::ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("--shutter"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CameraOptions, CropsTheSensorToTheImageAspect) {
+  CameraOptions o;
+  const FilmGeometry wide = cameraFilm(o, 640, 360);  // 16:9 on 3:2: full width
+  EXPECT_DOUBLE_EQ(wide.sensorWidthMm, 36.0);
+  EXPECT_DOUBLE_EQ(wide.sensorHeightMm, 20.25);
+  const FilmGeometry square = cameraFilm(o, 512, 512);  // full height
+  EXPECT_DOUBLE_EQ(square.sensorWidthMm, 24.0);
+  EXPECT_DOUBLE_EQ(square.sensorHeightMm, 24.0);
+}
+
+TEST(CameraOptions, ThinLensTakesTheLensFocalLengthAndFNumber) {
+  Warnings w;
+  const auto cam = makeCamera(withLens("thin"), CameraDesc{}, raster(64, 36), {}, w);
+  const ParaxialData p =
+      computeParaxial(loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-50mm.dat"));
+  const CameraInfo i = cam->info();
+  EXPECT_EQ(i.model, "thin");
+  EXPECT_NEAR(i.focalLengthMm, p.efl, 1e-9);
+  EXPECT_NEAR(i.fNumber, p.fNumber, 1e-9);
+  EXPECT_TRUE(std::isinf(i.focusMetres)) << "nothing to hit: --focus auto falls back to infinity";
+  const ImageMetadata m = cameraMetadata(*cam);
+  EXPECT_EQ(m.at("lensrt:camera_model"), "thin");
+  EXPECT_EQ(m.at("lensrt:lens"), "dgauss-50mm");
+  EXPECT_EQ(m.at("lensrt:focus_m"), "inf");
+  EXPECT_EQ(m.at("lensrt:sensor_mm"), "36x20.25");
+}
+
+// Focus breathing: the pinhole derived from a lens focused at s shows the
+// field the lens shows; at infinity that is 2 atan(h / 2 EFL).
+TEST(CameraOptions, PinholeGetsTheLensFieldOfViewAtItsFocus) {
+  Warnings w;
+  CameraOptions o = withLens("pinhole");
+  o.focus = "inf";
+  const auto far = makeCamera(o, CameraDesc{}, raster(64, 36), {}, w);
+  const double efl = far->info().focalLengthMm;
+  const ParaxialData p =
+      computeParaxial(loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-50mm.dat"));
+  EXPECT_NEAR(efl, p.efl, 1e-6);
+  o.focus = "0.5";
+  const auto near = makeCamera(o, CameraDesc{}, raster(64, 36), {}, w);
+  const double yfovNear = dynamic_cast<const PinholeCamera&>(*near).yfov();
+  const double yfovFar = dynamic_cast<const PinholeCamera&>(*far).yfov();
+  EXPECT_LT(yfovNear, yfovFar) << "the field narrows as the lens focuses closer";
+  // The in-focus plane's half height seen from the entrance pupil: h u / (v s).
+  const double s = 500, u = s + p.frontPrincipalZ - p.entrancePupilZ, v = p.efl * u / (u - p.efl);
+  EXPECT_NEAR(yfovNear, 2 * std::atan(20.25 / 2 * u / (v * s)), 1e-9);
+}
+
+// --focus auto: the hit distance along the focus pixel's ray, projected on the axis.
+TEST(CameraOptions, AutoFocusUsesTheAxialDistanceOfWhatThePixelSees) {
+  Warnings w;
+  CameraOptions o;
+  o.model = "thin";
+  o.focalLengthMm = 50;
+  o.fNumber = 4;
+  o.focusPixel = "0,0";  // the top-left pixel: its ray is oblique
+  Ray seen;
+  const HitDistance hit = [&](const Ray& r) -> std::optional<double> {
+    seen = r;
+    return 3.0 / -r.direction.z;  // a wall 3 m in front, perpendicular to the axis
+  };
+  const auto cam = makeCamera(o, CameraDesc{}, raster(64, 36), hit, w);
+  EXPECT_NEAR(cam->info().focusMetres, 3.0, 1e-4);
+  EXPECT_LT(seen.direction.x, 0.0f);
+  EXPECT_GT(seen.direction.y, 0.0f);
+}
+
+TEST(CameraOptions, UsageErrorsNameTheFlag) {
+  Warnings w;
+  const auto expectFlag = [&](CameraOptions o, const std::string& flag) {
+    try {
+      makeCamera(o, CameraDesc{}, raster(64, 36), {}, w);
+      ADD_FAILURE() << "no error for " << flag;
+    } catch (const CLI::ValidationError& e) {
+      EXPECT_NE(std::string(e.what()).find(flag), std::string::npos) << e.what();
+    }
+  };
+  CameraOptions thick;
+  thick.model = "thick";
+  expectFlag(thick, "--lens");
+  CameraOptions close = withLens("lens");
+  close.focus = "0.01";
+  expectFlag(close, "--focus");
+  CameraOptions pixel;
+  pixel.model = "thin";
+  pixel.focusPixel = "500,2";
+  expectFlag(pixel, "--focus-pixel");
+}
+
+}  // namespace
+}  // namespace lensrt
