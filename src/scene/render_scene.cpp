@@ -12,6 +12,20 @@
 namespace lensrt {
 namespace {
 
+// Zero-scale placements have no area (and no inverse for normals): nothing to
+// hit. Nearly singular ones neither, and Embree inverts instance transforms in
+// float: a scale like 1e-38 sent rays beyond its valid range (an assertion
+// abort inside rtcIntersect1; found by fuzz_gltf).
+bool degenerate(const Transform& xf) {
+  const double det = xf.determinant3x3();
+  if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) return true;
+  const Transform::Matrix& inv = xf.inverse().matrix();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c)
+      if (!(std::abs(inv[r][c]) < 1e15)) return true;
+  return false;
+}
+
 // Embree reports errors through a callback; C code cannot carry exceptions, so
 // the callback keeps the message and `check` throws it after the failed call.
 struct ErrorSlot {
@@ -180,7 +194,7 @@ void RenderScene::Impl::build() {
 
   std::vector<int> uses(desc.meshes.size(), 0);
   for (const MeshInstance& inst : desc.instances)
-    if (desc.meshes[inst.mesh].triangleCount() > 0 && inst.worldFromObject.determinant3x3() != 0.0)
+    if (desc.meshes[inst.mesh].triangleCount() > 0 && !degenerate(inst.worldFromObject))
       ++uses[inst.mesh];
 
   sharedScenes.resize(desc.meshes.size());
@@ -198,8 +212,7 @@ void RenderScene::Impl::build() {
   top = newScene();
   for (std::size_t i = 0; i < desc.instances.size(); ++i) {
     const MeshInstance& inst = desc.instances[i];
-    // Zero-scale placements have no area (and no inverse for normals): nothing to hit.
-    if (uses[inst.mesh] == 0 || inst.worldFromObject.determinant3x3() == 0.0) continue;
+    if (uses[inst.mesh] == 0 || degenerate(inst.worldFromObject)) continue;
     EmbreeGeometry geom;
     if (uses[inst.mesh] == 1) {
       geom = newTriangles(inst.mesh, &inst.worldFromObject);
