@@ -194,8 +194,7 @@ void RenderScene::Impl::build() {
 
   std::vector<int> uses(desc.meshes.size(), 0);
   for (const MeshInstance& inst : desc.instances)
-    if (desc.meshes[inst.mesh].triangleCount() > 0 && !degenerate(inst.worldFromObject))
-      ++uses[inst.mesh];
+    if (desc.meshes[inst.mesh].triangleCount() > 0 && !degenerate(inst.worldFromObject)) ++uses[inst.mesh];
 
   sharedScenes.resize(desc.meshes.size());
   for (std::size_t i = 0; i < desc.meshes.size(); ++i) {
