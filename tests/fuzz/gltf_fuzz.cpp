@@ -1,0 +1,82 @@
+// libFuzzer target for the glTF front end: the input is written to a file
+// (.glb when it starts with the binary magic, else .gltf) and goes through
+// tinygltf, our conversion (loadGltf), camera selection and the Embree scene,
+// then a few rays. Only InputError may escape; a crash, a sanitizer report, any
+// other exception or a non-finite hit is a finding.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/error.h"
+#include "core/warnings.h"
+#include "fuzz/fuzz_check.h"
+#include "scene/camera_selection.h"
+#include "scene/gltf_loader.h"
+#include "scene/render_scene.h"
+
+namespace {
+
+using namespace lensrt;
+
+// One directory per process, so parallel fuzz jobs do not share files;
+// relative URIs in the input resolve (and fail) inside it.
+const std::filesystem::path& workDir() {
+  static const std::filesystem::path dir = [] {
+    const auto d = std::filesystem::temp_directory_path() / ("lensrt_fuzz_gltf_" + std::to_string(getpid()));
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+void checkHit(const std::optional<SurfaceHit>& hit) {
+  if (!hit) return;
+  LENSRT_FUZZ_CHECK(std::isfinite(hit->t) && isFinite(hit->position));
+  LENSRT_FUZZ_CHECK(isFinite(hit->geometricNormal) && isFinite(hit->shadingNormal));
+  LENSRT_FUZZ_CHECK(std::abs(length(hit->shadingNormal) - 1.0f) < 1e-3f);
+}
+
+void exercise(const std::filesystem::path& file) {
+  Warnings warnings;
+  SceneDesc desc = loadGltf(file, -1, warnings);
+  const CameraDesc camera = selectCamera(desc, "", 1.5f);
+  LENSRT_FUZZ_CHECK(isFinite(camera.worldFromCamera.point(Vec3f{0, 0, 0})));
+  const RenderScene scene(std::move(desc));
+  const Bounds3f b = scene.bounds();
+  const Vec3f eye = camera.worldFromCamera.point(Vec3f{0, 0, 0});
+  for (int i = 0; i < 16; ++i) {
+    // Through the bounds' corners and centre from the camera, and along the axes.
+    const Vec3f corner{(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z};
+    const Vec3f target = i < 8 ? corner : b.center();
+    const Vec3f d = target - eye;
+    if (length(d) > 0.0f && isFinite(d)) checkHit(scene.intersect(Ray{eye, normalize(d)}));
+    const Vec3f axis{i % 3 == 0 ? 1.f : 0.f, i % 3 == 1 ? 1.f : 0.f, i % 3 == 2 ? 1.f : 0.f};
+    const Vec3f from = b.center() - axis * (length(b.diagonal()) + 1.0f);
+    if (isFinite(from)) {
+      checkHit(scene.intersect(Ray{from, axis}));
+      scene.occluded(Ray{from, axis, 0.0f, 1.0f});
+    }
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const bool glb = size >= 4 && data[0] == 'g' && data[1] == 'l' && data[2] == 'T' && data[3] == 'F';
+  const std::filesystem::path file = workDir() / (glb ? "input.glb" : "input.gltf");
+  {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
+  try {
+    exercise(file);
+  } catch (const InputError&) {
+    // Rejected with a message: the expected outcome for most inputs.
+  }
+  return 0;
+}
