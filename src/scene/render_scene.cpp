@@ -19,7 +19,8 @@ namespace {
 bool degenerate(const Transform& xf) {
   const double det = xf.determinant3x3();
   if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) return true;
-  const Transform::Matrix& inv = xf.inverse().matrix();
+  const Transform inverse = xf.inverse();
+  const Transform::Matrix& inv = inverse.matrix();
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c)
       if (!(std::abs(inv[r][c]) < 1e15)) return true;
