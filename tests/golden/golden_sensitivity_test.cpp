@@ -16,14 +16,13 @@ constexpr int kFail = 2;
 
 class GoldenSensitivity : public ::testing::Test {
  protected:
-  // Renders `name` with the test seed (plus `extra`) and checks that the
-  // unperturbed render passes.
-  void renderPassing(const std::string& name, const std::vector<std::string>& extra = {}) {
+  // Renders case `name` with the test seed and checks that it passes.
+  void renderPassing(const std::string& name) {
     c_ = &findCase(name);
     if (!std::filesystem::exists(referencePath(*c_)))
       GTEST_SKIP() << "no reference for " << name << " (tools/update-references); GoldenImage fails for it";
     render_ = dir_ / "render.exr";
-    const RunResult r = renderCase(*c_, kTestSeed, render_, extra);
+    const RunResult r = renderCase(*c_, kTestSeed, render_);
     ASSERT_EQ(r.status, 0) << r.err;
     const RunResult d = diffWithReference(*c_, render_);
     ASSERT_EQ(d.status, 0) << "the unperturbed render must pass:\n" << d.out;
@@ -57,8 +56,10 @@ int channel(const Image& image, const std::string& name) {
   return std::max(i, 0);
 }
 
-// A 2% exposure change moves each pixel by well under its noise: only the
-// flux test can see it.
+// A 2% exposure change moves most pixels by well under their noise; the
+// directly seen ceiling light, nearly noise-free, shows it (measured: 8
+// failing pixels where 3 are allowed, max |t| 7.4; the flux test alone,
+// z = -1.5, would not: the light's edge pixels dominate its variance).
 TEST_F(GoldenSensitivity, TwoPercentGainFails) {
   renderPassing("cornell-pinhole");
   if (IsSkipped() || HasFatalFailure()) return;
