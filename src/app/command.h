@@ -19,5 +19,6 @@ using CommandAction = std::function<int()>;
 CommandAction addRenderCommand(CLI::App& app, const CommandContext& context);
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context);
 CommandAction addDiffCommand(CLI::App& app, const CommandContext& context);
+CommandAction addCompareCommand(CLI::App& app, const CommandContext& context);
 
 }  // namespace lensrt

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   add(lensrt::addRenderCommand);
   add(lensrt::addLensCommand);
   add(lensrt::addDiffCommand);
+  add(lensrt::addCompareCommand);
 
   try {
     app.parse(argc, argv);

@@ -3,26 +3,15 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <memory>
-#include <stdexcept>
 
 #include "app/camera_options.h"
 #include "app/command.h"
+#include "app/render_job.h"
 #include "app/render_options.h"
 #include "core/error.h"
 #include "image/image_io.h"
-#include "render/environment.h"
-#include "render/integrator.h"
-#include "render/lights.h"
-#include "render/material_eval.h"
-#include "render/progress.h"
-#include "render/renderer.h"
-#include "scene/camera_selection.h"
-#include "scene/gltf_loader.h"
-#include "scene/render_scene.h"
 
 namespace lensrt {
 namespace {
@@ -44,8 +33,6 @@ struct RenderArgs {
   CameraOptions camera;
 };
 
-constexpr int kDefaultWidth = 640, kDefaultHeight = 360;
-
 // Everything that can be checked without rendering is checked first, so that
 // a long render never ends in an error.
 void checkOutput(const std::filesystem::path& out) {
@@ -62,111 +49,44 @@ void checkOutput(const std::filesystem::path& out) {
   if (std::filesystem::is_directory(out, ec)) throw InputError(out.string(), "is a directory");
 }
 
-Environment makeEnvironment(const EnvironmentSpec& spec) {
-  if (spec.constant) return Environment::constant(*spec.constant);
-  if (spec.file.empty()) return Environment();
-  const Image map = readImage(spec.file);
-  try {
-    return Environment::latLong(map);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(spec.file, e.what());
-  }
-}
-
 int runRender(const RenderArgs& args, const CommandContext& context) {
   // 1. Options.
-  const std::optional<Resolution> res =
-      args.resolution.empty() ? std::nullopt : std::optional(parseResolution(args.resolution));
-  const EnvironmentSpec envSpec =
-      args.environment.empty() ? EnvironmentSpec{} : parseEnvironment(args.environment);
-  const AovSelection aovs = parseAovs(args.aovs);
-  checkOutput(args.output);
-  if (!args.environment.empty() && !envSpec.file.empty() && !std::filesystem::is_regular_file(envSpec.file))
-    throw InputError(envSpec.file, "environment map not found");
-
-  Warnings warnings([&](const std::string& message) {
-    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
-  });
-
-  // 2. Scene, camera, lights.
-  SceneDesc desc = loadGltf(args.scene, args.sceneIndex, warnings);
-  const float defaultAspect = float(kDefaultWidth) / float(kDefaultHeight);
-  const float aspectGuess = res && res->height > 0 ? float(res->width) / float(res->height) : defaultAspect;
-  CameraDesc cam = selectCamera(desc, args.cameraNode, aspectGuess);
-  // Without --res (or with a width only) the height follows the glTF camera's
-  // aspect ratio when it has one, else 16:9.
-  const int width = res ? res->width : kDefaultWidth;
-  int height = res && res->height > 0 ? res->height : 0;
-  if (height == 0) {
-    const float aspect = cam.aspectRatio && *cam.aspectRatio > 0 ? *cam.aspectRatio : defaultAspect;
-    height = std::max(1, int(std::lround(float(width) / aspect)));
-  }
-  if (!res || res->height == 0) cam = selectCamera(desc, args.cameraNode, float(width) / float(height));
-  const Environment environment = makeEnvironment(envSpec);
-
-  // The scene is built before the camera: --focus auto asks it what the
-  // focus pixel sees.
-  const RenderScene scene(std::move(desc));
-  const HitDistance hitDistance = [&scene](const Ray& ray) -> std::optional<double> {
-    const std::optional<SurfaceHit> hit = scene.intersect(ray);
-    return hit ? std::optional<double>(hit->t) : std::nullopt;
-  };
-  std::unique_ptr<Camera> camera;
-  try {
-    FilmGeometry raster;
-    raster.width = width;
-    raster.height = height;
-    camera = makeCamera(args.camera, cam, raster, hitDistance, warnings);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(args.scene, "camera '" + cam.name + "': " + e.what());
-  }
-  const MaterialTable materials(scene.desc());
-  const LightSet lights(materials, environment, scene.bounds());
-  if (lights.empty() && !args.quiet)
-    warnings.warn(
-        "the scene has no lights, emissive surfaces or environment: the image will be black "
-        "(try --env constant:1)");
-  IntegratorSettings integratorSettings;
-  integratorSettings.maxDepth = args.maxDepth;
-  const Integrator integrator(scene, materials, lights, environment, integratorSettings);
-
-  // 3. Render.
+  SceneOptions sceneOptions;
+  sceneOptions.scene = args.scene;
+  sceneOptions.sceneIndex = args.sceneIndex;
+  sceneOptions.cameraNode = args.cameraNode;
+  if (!args.resolution.empty()) sceneOptions.resolution = parseResolution(args.resolution);
+  if (!args.environment.empty()) sceneOptions.environment = parseEnvironment(args.environment);
+  sceneOptions.maxDepth = args.maxDepth;
+  sceneOptions.quiet = args.quiet;
   RenderSettings settings;
   settings.samplesPerPixel = args.spp;
   settings.seed = args.seed;
   settings.threads = args.threads;
   settings.tileSize = args.tileSize;
-  settings.aovs = aovs;
-  const auto start = std::chrono::steady_clock::now();
-  RenderOutput out;
-  {
-    Progress progress(std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(args.spp),
-                      Progress::styleFor(stderr, args.quiet));
-    out = renderImage(*camera, integrator, settings, &progress);
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  settings.aovs = parseAovs(args.aovs);
+  checkOutput(args.output);
+  const std::string& envFile = sceneOptions.environment.file;
+  if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
+    throw InputError(envFile, "environment map not found");
 
-  // 4. Write.
-  ImageMetadata metadata{
-      {"lensrt:camera", camera->describe()},
-      {"lensrt:spp", std::to_string(args.spp)},
-      {"lensrt:seed", std::to_string(args.seed)},
-      {"lensrt:max_depth", std::to_string(args.maxDepth)},
-      {"lensrt:environment", environment.describe()},
-      {"lensrt:render_seconds", fmt::format("{:.3f}", seconds)},
-      {"lensrt:version", LENSRT_VERSION},
-      {"lensrt:command_line", context.commandLine},
-      {"lensrt:nan_samples", std::to_string(out.droppedSamples)},
-      {"lensrt:camera_ray_efficiency", fmt::format("{:.4f}", out.cameraRayEfficiency())},
-  };
-  metadata.merge(cameraMetadata(*camera));
-  writeImage(args.output, out.image, metadata);
-  if (out.droppedSamples > 0 && !args.quiet)
+  Warnings warnings([&](const std::string& message) {
+    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
+  });
+
+  // 2. Scene, lights, camera, render.
+  const RenderJob job(sceneOptions, warnings);
+  const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
+  const RenderJobResult result = job.render(*camera, settings, args.quiet);
+
+  // 3. Write.
+  writeImage(args.output, result.output.image, job.metadata(*camera, settings, result, context.commandLine));
+  if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
-               args.scene, out.droppedSamples);
+               args.scene, result.output.droppedSamples);
   if (!args.quiet)
-    fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output, width, height,
-               args.spp, seconds, camera->describe());
+    fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output, job.width(),
+               job.height(), args.spp, result.seconds, camera->describe());
   return 0;
 }
 

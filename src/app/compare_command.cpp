@@ -1,0 +1,299 @@
+// `lensrt compare SCENE --lens FILE -o DIR`: the four camera models with
+// matched settings (the simpler ones derived from the lens's paraxial data),
+// their renders, a contact sheet, heat maps against the full lens, and the
+// figures in report.json and report.html.
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/camera_options.h"
+#include "app/command.h"
+#include "app/compare_report.h"
+#include "app/render_job.h"
+#include "app/render_options.h"
+#include "core/error.h"
+#include "image/contact_sheet.h"
+#include "image/heatmap.h"
+#include "image/image_diff.h"
+#include "image/image_io.h"
+#include "optics/lens_readers.h"
+#include "optics/paraxial.h"
+
+namespace lensrt {
+namespace {
+
+constexpr std::array<const char*, 4> kModels = {"pinhole", "thin", "thick", "lens"};
+
+struct CompareArgs {
+  std::string scene;
+  std::string outputDir;
+  int spp = 16;
+  std::string resolution;
+  int maxDepth = 8;
+  int threads = 0;
+  std::uint64_t seed = 0;
+  std::string cameraNode;
+  int sceneIndex = -1;
+  std::string environment;
+  int tileSize = 16;
+  bool quiet = false;
+  CameraOptions camera;
+};
+
+nlohmann::json numberOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+// DIR may be new, but its parent must exist: a typo should not create a tree.
+std::filesystem::path prepareOutputDir(const std::string& text) {
+  const std::filesystem::path dir(text);
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec)) {
+    if (!std::filesystem::is_directory(dir, ec)) throw InputError(text, "exists and is not a directory");
+  } else {
+    std::filesystem::path parent = dir.parent_path();
+    if (parent.empty()) parent = ".";
+    if (!std::filesystem::is_directory(parent, ec))
+      throw InputError(text, "the parent directory " + parent.string() + " does not exist");
+    if (!std::filesystem::create_directory(dir, ec) && ec)
+      throw InputError(text, "cannot create the directory: " + ec.message());
+  }
+  if (access(dir.c_str(), W_OK) != 0) throw InputError(text, "the directory is not writable");
+  return dir;
+}
+
+nlohmann::json lensFigures(const CameraOptions& options) {
+  LensPrescription lens = loadLens(findLens(options.lens, options.lensDir));
+  if (options.focalLengthMm) lens = lens.scaled(*options.focalLengthMm / computeParaxial(lens).efl);
+  const ParaxialData p = computeParaxial(lens);
+  return {
+      {"name", lens.name},
+      {"description", lens.description},
+      {"efl_mm", p.efl},
+      {"bfl_mm", p.bfl},
+      {"ffl_mm", p.ffl},
+      {"f_number_wide_open", p.fNumber},
+      {"stop_diameter_mm", p.stopDiameter},
+      {"entrance_pupil_z_mm", p.entrancePupilZ},
+      {"entrance_pupil_diameter_mm", p.entrancePupilDiameter},
+      {"exit_pupil_z_mm", p.exitPupilZ},
+      {"exit_pupil_diameter_mm", p.exitPupilDiameter},
+      {"front_principal_z_mm", p.frontPrincipalZ},
+      {"rear_principal_z_mm", p.rearPrincipalZ},
+      {"front_focal_z_mm", p.frontFocalZ},
+      {"rear_focal_z_mm", p.rearFocalZ},
+      {"length_mm", p.lastVertexZ},
+  };
+}
+
+// One errors scale for all heat maps so they can be compared: the 99.5th
+// percentile of the finite errors, so a few fireflies do not wash them out.
+double commonHeatmapScale(const std::vector<std::vector<float>>& errors) {
+  std::vector<float> all;
+  for (const auto& e : errors)
+    for (const float v : e)
+      if (std::isfinite(v)) all.push_back(v);
+  if (all.empty()) return 1.0;
+  const std::size_t k = std::min(all.size() - 1, std::size_t(0.995 * double(all.size())));
+  std::nth_element(all.begin(), all.begin() + std::ptrdiff_t(k), all.end());
+  return all[k] > 0 ? double(all[k]) : 1.0;
+}
+
+int runCompare(const CompareArgs& args, const CommandContext& context) {
+  // 1. Everything that can fail before rendering.
+  SceneOptions sceneOptions;
+  sceneOptions.scene = args.scene;
+  sceneOptions.sceneIndex = args.sceneIndex;
+  sceneOptions.cameraNode = args.cameraNode;
+  if (!args.resolution.empty()) sceneOptions.resolution = parseResolution(args.resolution);
+  if (!args.environment.empty()) sceneOptions.environment = parseEnvironment(args.environment);
+  sceneOptions.maxDepth = args.maxDepth;
+  sceneOptions.quiet = args.quiet;
+  RenderSettings settings;
+  settings.samplesPerPixel = args.spp;
+  settings.seed = args.seed;
+  settings.threads = args.threads;
+  settings.tileSize = args.tileSize;
+  const std::string& envFile = sceneOptions.environment.file;
+  if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
+    throw InputError(envFile, "environment map not found");
+  const std::filesystem::path dir = prepareOutputDir(args.outputDir);
+
+  Warnings warnings([&](const std::string& message) {
+    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
+  });
+  const RenderJob job(sceneOptions, warnings);
+  // All four cameras first: a bad --focus fails before any render.
+  std::vector<std::unique_ptr<Camera>> cameras;
+  for (const char* model : kModels) {
+    CameraOptions options = args.camera;
+    options.model = model;
+    cameras.push_back(job.makeCamera(options, warnings));
+  }
+  const nlohmann::json lens = lensFigures(args.camera);
+
+  // 2. Render and write each model's EXR.
+  std::vector<RenderJobResult> results;
+  for (std::size_t i = 0; i < kModels.size(); ++i) {
+    if (!args.quiet)
+      fmt::print(stderr, "lensrt: compare: {} ({}/{})\n", cameras[i]->describe(), i + 1, kModels.size());
+    results.push_back(job.render(*cameras[i], settings, args.quiet));
+    writeImage(dir / (std::string(kModels[i]) + ".exr"), results.back().output.image,
+               job.metadata(*cameras[i], settings, results.back(), context.commandLine));
+    if (results.back().output.droppedSamples > 0)
+      warnings.warn(fmt::format("{}: {} samples with NaN or infinite radiance were dropped", kModels[i],
+                                results.back().output.droppedSamples));
+  }
+  const std::size_t lensIndex = kModels.size() - 1;
+  const Image& lensImage = results[lensIndex].output.image;
+
+  // 3. Contact sheet.
+  std::vector<LabelledImage> cells;
+  for (std::size_t i = 0; i < kModels.size(); ++i) {
+    const CameraInfo info = cameras[i]->info();
+    const std::string focus = info.focusMetres <= 0 ? "no focus"
+                              : std::isinf(info.focusMetres)
+                                  ? "focus inf"
+                                  : fmt::format("focus {:.3g} m", info.focusMetres);
+    cells.push_back(
+        {results[i].output.image,
+         {kModels[i],
+          fmt::format("f={:.4g}mm {} {}", info.focalLengthMm,
+                      info.fNumber > 0 ? fmt::format("f/{:.3g}", info.fNumber) : "no aperture", focus),
+          fmt::format("{} spp, {:.2f} s, rays {:.1f}%", args.spp, results[i].seconds,
+                      100.0 * results[i].output.cameraRayEfficiency())}});
+  }
+  writeImage(dir / "contact-sheet.png", makeContactSheet(cells, 2), {});
+
+  // 4. Heat maps and figures.
+  std::vector<std::vector<float>> errors;
+  for (std::size_t i = 0; i < lensIndex; ++i)
+    errors.push_back(perPixelMaxError(results[i].output.image, lensImage));
+  HeatmapOptions heatmap;
+  heatmap.scaleMax = commonHeatmapScale(errors);
+
+  nlohmann::json models = nlohmann::json::object();
+  for (std::size_t i = 0; i < kModels.size(); ++i) {
+    const Image& image = results[i].output.image;
+    const CameraInfo info = cameras[i]->info();
+    nlohmann::json m = {
+        {"camera", cameras[i]->describe()},
+        {"file", std::string(kModels[i]) + ".exr"},
+        {"f_number", info.fNumber > 0 ? nlohmann::json(info.fNumber) : nlohmann::json(nullptr)},
+        {"focus_m", info.focusMetres > 0 ? numberOrNull(info.focusMetres) : nlohmann::json(nullptr)},
+        {"focus_at_infinity", std::isinf(info.focusMetres)},
+        {"focal_length_mm", info.focalLengthMm},
+        {"render_seconds", results[i].seconds},
+        {"camera_ray_efficiency", results[i].output.cameraRayEfficiency()},
+        {"nan_samples", results[i].output.droppedSamples},
+        {"mean",
+         {{"luminance", numberOrNull(meanLuminance(image))},
+          {"R", numberOrNull(channelMean(image, "R"))},
+          {"G", numberOrNull(channelMean(image, "G"))},
+          {"B", numberOrNull(channelMean(image, "B"))}}},
+    };
+    nlohmann::json profile = nlohmann::json::array();
+    for (const double v : vignettingProfile(image)) profile.push_back(numberOrNull(v));
+    m["vignetting_profile"] = profile;
+    const DiffReport diff = diffImages(image, lensImage, DiffThresholds{});
+    m["mean_abs_diff_vs_lens"] = numberOrNull(diff.overall.meanError);
+    m["rmse_vs_lens"] = numberOrNull(diff.overall.rmse);
+    if (i < lensIndex) {
+      heatmap.title = fmt::format("|{} - lens|", kModels[i]);
+      const std::string name = fmt::format("diff-{}-vs-lens.png", kModels[i]);
+      writeImage(dir / name, makeHeatmap(errors[i], image.width, image.height, heatmap), {});
+      m["heatmap"] = name;
+    }
+    models[kModels[i]] = m;
+  }
+
+  const CameraInfo lensInfo = cameras[lensIndex]->info();
+  nlohmann::json report = {
+      {"version", LENSRT_VERSION},
+      {"command_line", context.commandLine},
+      {"model_order", kModels},
+      {"settings",
+       {{"scene", args.scene},
+        {"lens", args.camera.lens},
+        {"f_number", lensInfo.fNumber},
+        {"focus", args.camera.focus},
+        {"focus_m", numberOrNull(lensInfo.focusMetres)},
+        {"sensor", args.camera.sensor},
+        {"exposure", lensInfo.exposure},
+        {"blades", args.camera.blades},
+        {"width", job.width()},
+        {"height", job.height()},
+        {"spp", args.spp},
+        {"seed", args.seed},
+        {"max_depth", args.maxDepth},
+        {"environment", args.environment.empty() ? "none" : args.environment}}},
+      {"lens", lens},
+      {"heatmap_scale", heatmap.scaleMax},
+      {"vignetting_bins", kVignettingBins},
+      {"models", models},
+  };
+  writeTextFileAtomically(dir / "report.json", report.dump(2) + "\n");
+  writeTextFileAtomically(dir / "report.html", compareReportHtml(report));
+  if (!args.quiet) fmt::print(stderr, "lensrt: wrote {}/report.html\n", dir.string());
+  return 0;
+}
+
+}  // namespace
+
+CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Render a scene through the four camera models with matched settings: pinhole, thin and thick lens "
+      "derived from --lens's paraxial data, and the full lens. Writes DIR/{pinhole,thin,thick,lens}.exr, "
+      "contact-sheet.png, diff-<model>-vs-lens.png heat maps, report.json and report.html.\n"
+      "Example: lensrt compare scenes/dof_row.gltf --lens dgauss-50mm --fstop 2 --focus 2 --spp 64 "
+      "--res 640x360 -o out/cmp");
+  auto args = std::make_shared<CompareArgs>();
+  cmd->add_option("scene", args->scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
+      ->required();
+  cmd->add_option("-o,--output", args->outputDir,
+                  "output directory, created if missing (its parent must exist), e.g. -o out/cmp")
+      ->required();
+  cmd->add_option("--spp", args->spp, "samples per pixel for every model (>= 1), e.g. --spp 64")
+      ->check(CLI::Range(1, 1 << 24))
+      ->capture_default_str();
+  cmd->add_option("--res", args->resolution,
+                  "image size in pixels WIDTHxHEIGHT, e.g. --res 640x360 (default 640 wide, height from the "
+                  "glTF camera's aspect ratio or 360)")
+      ->check([](const std::string& s) { return checkResolution(s); });
+  cmd->add_option("--max-depth", args->maxDepth, "maximum scattering events per path, e.g. --max-depth 8")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "worker threads (0: all cores), e.g. --threads 4")
+      ->check(CLI::Range(0, 4096))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "random seed, the same for every model, e.g. --seed 7")
+      ->capture_default_str();
+  cmd->add_option("--camera-node", args->cameraNode, "camera to render: a glTF node name or index");
+  cmd->add_option("--scene-index", args->sceneIndex, "which glTF scene to render (0-based)")
+      ->check(CLI::Range(-1, 1 << 20));
+  cmd->add_option("--env", args->environment,
+                  "environment light: constant:V, constant:R,G,B or a lat-long .exr/.hdr map, e.g. --env "
+                  "constant:1 (default: black)")
+      ->check([](const std::string& s) { return checkEnvironment(s); });
+  cmd->add_option("--tile", args->tileSize, "tile size in pixels for scheduling (does not change the images)")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  addCameraOptions(*cmd, args->camera);
+  // compare renders every model; the lens they are derived from is required.
+  cmd->remove_option(cmd->get_option("--camera"));
+  cmd->get_option("--lens")->required();
+  cmd->add_flag("-q,--quiet", args->quiet, "no progress, warnings or summary on stderr (errors still print)");
+  return [args, context]() { return runCompare(*args, context); };
+}
+
+}  // namespace lensrt

@@ -1,0 +1,114 @@
+#include "app/render_job.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "image/image_io.h"
+#include "render/progress.h"
+#include "scene/camera_selection.h"
+#include "scene/gltf_loader.h"
+
+namespace lensrt {
+namespace {
+constexpr int kDefaultWidth = 640, kDefaultHeight = 360;
+}  // namespace
+
+Environment makeEnvironment(const EnvironmentSpec& spec) {
+  if (spec.constant) return Environment::constant(*spec.constant);
+  if (spec.file.empty()) return Environment();
+  const Image map = readImage(spec.file);
+  try {
+    return Environment::latLong(map);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(spec.file, e.what());
+  }
+}
+
+RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_(options) {
+  const std::optional<Resolution>& res = options.resolution;
+  SceneDesc desc = loadGltf(options.scene, options.sceneIndex, warnings);
+  const float defaultAspect = float(kDefaultWidth) / float(kDefaultHeight);
+  const float aspectGuess = res && res->height > 0 ? float(res->width) / float(res->height) : defaultAspect;
+  gltfCamera_ = selectCamera(desc, options.cameraNode, aspectGuess);
+  // Without --res (or with a width only) the height follows the glTF camera's
+  // aspect ratio when it has one, else 16:9.
+  width_ = res ? res->width : kDefaultWidth;
+  height_ = res && res->height > 0 ? res->height : 0;
+  if (height_ == 0) {
+    const float aspect =
+        gltfCamera_.aspectRatio && *gltfCamera_.aspectRatio > 0 ? *gltfCamera_.aspectRatio : defaultAspect;
+    height_ = std::max(1, int(std::lround(float(width_) / aspect)));
+  }
+  if (!res || res->height == 0)
+    gltfCamera_ = selectCamera(desc, options.cameraNode, float(width_) / float(height_));
+  environment_ = std::make_unique<Environment>(makeEnvironment(options.environment));
+
+  scene_ = std::make_unique<RenderScene>(std::move(desc));
+  materials_ = std::make_unique<MaterialTable>(scene_->desc());
+  lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+  if (lights_->empty() && !options.quiet)
+    warnings.warn(
+        "the scene has no lights, emissive surfaces or environment: the image will be black "
+        "(try --env constant:1)");
+  IntegratorSettings integratorSettings;
+  integratorSettings.maxDepth = options.maxDepth;
+  integrator_ =
+      std::make_unique<Integrator>(*scene_, *materials_, *lights_, *environment_, integratorSettings);
+}
+
+RenderJob::~RenderJob() = default;
+
+std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warnings& warnings) const {
+  const HitDistance hitDistance = [this](const Ray& ray) -> std::optional<double> {
+    const std::optional<SurfaceHit> hit = scene_->intersect(ray);
+    return hit ? std::optional<double>(hit->t) : std::nullopt;
+  };
+  try {
+    FilmGeometry raster;
+    raster.width = width_;
+    raster.height = height_;
+    return lensrt::makeCamera(options, gltfCamera_, raster, hitDistance, warnings);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(options_.scene, "camera '" + gltfCamera_.name + "': " + e.what());
+  }
+}
+
+RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& settings, bool quiet) const {
+  const auto start = std::chrono::steady_clock::now();
+  RenderJobResult result;
+  {
+    const FilmGeometry& film = camera.film();
+    Progress progress(
+        std::uint64_t(film.width) * std::uint64_t(film.height) * std::uint64_t(settings.samplesPerPixel),
+        Progress::styleFor(stderr, quiet));
+    result.output = renderImage(camera, *integrator_, settings, &progress);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& settings,
+                                  const RenderJobResult& result, const std::string& commandLine) const {
+  ImageMetadata metadata{
+      {"lensrt:camera", camera.describe()},
+      {"lensrt:spp", std::to_string(settings.samplesPerPixel)},
+      {"lensrt:seed", std::to_string(settings.seed)},
+      {"lensrt:max_depth", std::to_string(options_.maxDepth)},
+      {"lensrt:environment", environment_->describe()},
+      {"lensrt:render_seconds", fmt::format("{:.3f}", result.seconds)},
+      {"lensrt:version", LENSRT_VERSION},
+      {"lensrt:command_line", commandLine},
+      {"lensrt:nan_samples", std::to_string(result.output.droppedSamples)},
+      {"lensrt:camera_ray_efficiency", fmt::format("{:.4f}", result.output.cameraRayEfficiency())},
+  };
+  metadata.merge(cameraMetadata(camera));
+  return metadata;
+}
+
+}  // namespace lensrt

@@ -1,0 +1,75 @@
+// The render pipeline shared by `lensrt render` and `lensrt compare`: the
+// scene, materials, lights and integrator are built once, then any number of
+// cameras render through them with the same settings.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/camera_options.h"
+#include "app/render_options.h"
+#include "camera/camera.h"
+#include "core/warnings.h"
+#include "image/image.h"
+#include "render/environment.h"
+#include "render/integrator.h"
+#include "render/lights.h"
+#include "render/material_eval.h"
+#include "render/renderer.h"
+#include "scene/render_scene.h"
+
+namespace lensrt {
+
+struct SceneOptions {
+  std::string scene;  // .gltf / .glb
+  int sceneIndex = -1;
+  std::string cameraNode;
+  std::optional<Resolution> resolution;  // none: 640 wide, height from the camera's aspect
+  EnvironmentSpec environment;
+  int maxDepth = 8;
+  bool quiet = false;  // no "no lights" warning
+};
+
+struct RenderJobResult {
+  RenderOutput output;
+  double seconds = 0.0;
+};
+
+class RenderJob {
+ public:
+  // Loads the scene and builds everything but the camera. Throws InputError.
+  RenderJob(const SceneOptions& options, Warnings& warnings);
+  ~RenderJob();
+  RenderJob(const RenderJob&) = delete;
+  RenderJob& operator=(const RenderJob&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // One of the four models for these options, framed by the glTF camera;
+  // --focus auto asks the scene what the focus pixel sees.
+  std::unique_ptr<Camera> makeCamera(const CameraOptions& options, Warnings& warnings) const;
+
+  // Renders with a progress bar on stderr unless `quiet`.
+  RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
+
+  // The EXR header of a render: camera, settings, timing, efficiency.
+  ImageMetadata metadata(const Camera& camera, const RenderSettings& settings, const RenderJobResult& result,
+                         const std::string& commandLine) const;
+
+ private:
+  SceneOptions options_;
+  int width_ = 0, height_ = 0;
+  CameraDesc gltfCamera_;
+  std::unique_ptr<Environment> environment_;
+  std::unique_ptr<RenderScene> scene_;
+  std::unique_ptr<MaterialTable> materials_;
+  std::unique_ptr<LightSet> lights_;
+  std::unique_ptr<Integrator> integrator_;
+};
+
+// The environment a spec describes; reads the map file. Throws InputError.
+Environment makeEnvironment(const EnvironmentSpec& spec);
+
+}  // namespace lensrt
