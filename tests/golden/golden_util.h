@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ struct GoldenCase {
   std::string scene;              // relative to scenes/
   std::vector<std::string> args;  // render arguments
 };
+
+// How GoogleTest names a case in test listings (else it dumps the bytes).
+inline void PrintTo(const GoldenCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 // Parses cases.txt (throws std::runtime_error naming the line when malformed).
 std::vector<GoldenCase> loadCases(const std::filesystem::path& file);
