@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""Writes the glTF files of the bad-input corpus (run from anywhere; the files
+are committed, this records how each was made). Lens files are hand-written."""
+import base64
+import copy
+import json
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TRI = [0, 0, 0, 1, 0, 0, 0, 1, 0]
+PNG_2x1 = ("iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAYAAAD0In+KAAAAEUlEQVR4nGNoaGj4z8DAwMAAAA4AAv9j"
+           "8TQAAAAASUVORK5CYII=")
+
+
+def scene(positions=TRI, indices=(0, 1, 2), extra_bytes=b""):
+    data = struct.pack("<%df" % len(positions), *positions)
+    pos_len = len(data)
+    idx = struct.pack("<%dH" % len(indices), *indices)
+    data += idx + b"\0" * (-len(idx) % 4) + extra_bytes
+    doc = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": len(positions) // 3, "type": "VEC3",
+             "min": [min(positions[i::3]) for i in range(3)], "max": [max(positions[i::3]) for i in range(3)]},
+            {"bufferView": 1, "componentType": 5123, "count": len(indices), "type": "SCALAR"},
+        ],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": pos_len},
+            {"buffer": 0, "byteOffset": pos_len, "byteLength": len(idx)},
+        ],
+        "buffers": [{"byteLength": len(data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+    }
+    return doc
+
+
+def write(name, doc):
+    text = doc if isinstance(doc, str) else json.dumps(doc, indent=1)
+    with open(os.path.join(HERE, name), "w", encoding="utf-8") as f:
+        f.write(text)
+
+
+def glb(doc):
+    body = json.dumps(doc).encode()
+    body += b" " * (-len(body) % 4)
+    return struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(body)) + struct.pack("<I4s", len(body), b"JSON") + body
+
+
+good = scene()
+write("good-triangle.gltf", good)
+write("truncated.gltf", json.dumps(good, indent=1)[:200])
+
+d = copy.deepcopy(good)
+d["buffers"][0]["uri"] = "missing-geometry.bin"
+write("missing-bin.gltf", d)
+
+d = copy.deepcopy(good)
+d["bufferViews"][0]["byteLength"] = 4000
+write("buffer-shorter-than-view.gltf", d)
+
+d = copy.deepcopy(good)
+d["accessors"][0]["count"] = 5
+write("accessor-beyond-view.gltf", d)
+
+d = copy.deepcopy(good)
+d["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9
+write("accessor-does-not-exist.gltf", d)
+
+write("index-beyond-vertex-count.gltf", scene(indices=(0, 1, 7)))
+
+nan = struct.unpack("<f", struct.pack("<I", 0x7FC00000))[0]
+d = scene(positions=[0, 0, 0, 1, 0, 0, 0, 1, 0])
+raw = base64.b64decode(d["buffers"][0]["uri"].split(",")[1])
+raw = raw[:12] + struct.pack("<I", 0x7FC00000) + raw[16:]  # x of vertex 1 = NaN
+d["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(raw).decode()
+write("nan-vertex.gltf", d)
+
+write("huge-coordinates.gltf", scene(positions=[0, 0, 0, 1e20, 0, 0, 0, 1, 0]))
+
+d = copy.deepcopy(good)
+d["nodes"][0]["scale"] = [1e16, 1, 1]
+write("huge-node-scale.gltf", d)
+
+write("degenerate-only.gltf", scene(positions=[0, 0, 0, 1, 1, 1, 2, 2, 2]))
+
+write("no-meshes.gltf", {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+                         "nodes": [{"name": "empty"}]})
+
+d = copy.deepcopy(good)
+d["extensionsUsed"] = d["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+write("required-extension.gltf", d)
+
+
+def textured(image):
+    d = scene()
+    raw = base64.b64decode(d["buffers"][0]["uri"].split(",")[1])
+    raw += struct.pack("<6f", 0, 0, 1, 0, 0, 1)
+    d["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(raw).decode()
+    d["buffers"][0]["byteLength"] = len(raw)
+    d["bufferViews"].append({"buffer": 0, "byteOffset": len(raw) - 24, "byteLength": 24})
+    d["accessors"].append({"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"})
+    d["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2
+    d["meshes"][0]["primitives"][0]["material"] = 0
+    d["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    d["textures"] = [{"source": 0}]
+    d["images"] = [image]
+    return d
+
+
+write("missing-texture.gltf", textured({"uri": "no-such-texture.png"}))
+write("corrupt-texture.gltf", textured({"uri": "data:image/png;base64," +
+                                        base64.b64encode(base64.b64decode(PNG_2x1)[:30]).decode()}))
+
+d = copy.deepcopy(good)
+d["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}}]
+d["nodes"].append({"camera": 0, "translation": [0, 0, 5]})
+d["scenes"][0]["nodes"].append(1)
+write("camera-yfov-zero.gltf", d)
+
+d = copy.deepcopy(good)
+d["nodes"][0]["children"] = [0]
+write("node-cycle.gltf", d)
+
+d = copy.deepcopy(good)
+d["asset"]["version"] = "1.0"
+write("gltf-version-1.gltf", d)
+
+d = copy.deepcopy(good)
+d["accessors"][0]["count"] = 2 ** 31
+write("huge-accessor-count.gltf", d)
+
+d = copy.deepcopy(good)
+d["nodes"][0]["matrix"] = [1, 0, 0]
+write("short-matrix.gltf", d)
+
+d = copy.deepcopy(good)
+d["meshes"][0]["primitives"][0]["mode"] = 1  # LINES: nothing to render
+write("lines-only.gltf", d)
+
+with open(os.path.join(HERE, "wrong-header.glb"), "wb") as f:
+    f.write(b"gLtF" + glb(good)[4:])
+with open(os.path.join(HERE, "truncated.glb"), "wb") as f:
+    f.write(glb(good)[:-40])
+with open(os.path.join(HERE, "glb-version-1.glb"), "wb") as f:
+    g = glb(good)
+    f.write(g[:4] + struct.pack("<I", 1) + g[8:])
+with open(os.path.join(HERE, "empty.gltf"), "w") as f:
+    pass
