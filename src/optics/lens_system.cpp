@@ -1,11 +1,14 @@
 #include "optics/lens_system.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lensrt {
 
-bool refract(const Vec3d& d, const Vec3d& n, double n1, double n2, Vec3d& out) {
-  const double eta = n1 / n2;
+namespace {
+
+// refract() with the index ratio n1 / n2 already divided out.
+inline bool refractEta(const Vec3d& d, const Vec3d& n, double eta, Vec3d& out) {
   const double cosI = -dot(n, d);
   const double sin2T = eta * eta * std::max(0.0, 1.0 - cosI * cosI);
   if (sin2T >= 1.0) return false;  // total internal reflection
@@ -15,108 +18,126 @@ bool refract(const Vec3d& d, const Vec3d& n, double n1, double n2, Vec3d& out) {
   return true;
 }
 
+}  // namespace
+
+bool refract(const Vec3d& d, const Vec3d& n, double n1, double n2, Vec3d& out) {
+  return refractEta(d, n, n1 / n2, out);
+}
+
 LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(prescription)) {
   validatePrescription(prescription_);
   paraxial_ = computeParaxial(prescription_);
-  double z = 0.0;
+  double z = 0.0, ndBefore = 1.0;  // the scene is air
   for (const Surface& s : prescription_.surfaces) {
     TraceSurface t;
     t.z = z;
     t.radius = s.radius;
     t.invRadius = s.radius != 0.0 ? 1.0 / s.radius : 0.0;
+    t.absInvRadius = std::abs(t.invRadius);
+    t.invRadius2 = t.invRadius * t.invRadius;
     t.apertureRadius = s.apertureDiameter / 2.0;
     t.apertureRadius2 = t.apertureRadius * t.apertureRadius;
     t.isStop = s.isStop;
     t.ndAfter = s.medium.nd;
     t.after = Dispersion::of(s.medium);
+    t.etaFromFilm = t.ndAfter / ndBefore;
+    t.etaFromScene = ndBefore / t.ndAfter;
+    t.refracts = !t.isStop && t.ndAfter != ndBefore;
     surfaces_.push_back(t);
     z += s.thickness;
+    ndBefore = t.ndAfter;
   }
 }
 
-double LensSystem::indexAfter(int i, double wavelengthNm) const {
-  if (i < 0) return 1.0;  // the scene is air
-  const TraceSurface& s = surfaces_[i];
-  return wavelengthNm == kWavelengthDNm ? s.ndAfter : s.after.index(wavelengthNm);
-}
-
-bool LensSystem::intersect(const TraceSurface& s, const Vec3d& o, const Vec3d& d, Vec3d& hit, Vec3d& normal) {
-  // Work relative to the vertex: a sphere through the vertex is
-  // x^2 + y^2 + z^2 - 2 R z = 0, which avoids cancellation for large R.
-  const Vec3d p{o.x, o.y, o.z - s.z};
-  double t;
-  if (s.radius == 0.0) {
-    if (d.z == 0.0) return false;
-    t = -p.z / d.z;
-    if (!(t >= -1e-9)) return false;
-    hit = p + d * t;
-    normal = {0.0, 0.0, d.z > 0.0 ? -1.0 : 1.0};
-  } else {
-    const double R = s.radius;
-    const double b = dot(p, d) - R * d.z;
-    const double c = dot(p, p) - 2.0 * R * p.z;
-    const double disc = b * b - c;
-    if (!(disc >= 0.0)) return false;
-    const double q = -(b + std::copysign(std::sqrt(disc), b));
-    double t0 = q, t1 = q != 0.0 ? c / q : 0.0;
-    if (t0 > t1) std::swap(t0, t1);
-    // The first crossing of the cap around the vertex (not the far hemisphere).
-    const auto onCap = [&](double tt) { return tt >= -1e-9 && (p.z + d.z * tt - R) * R < 0.0; };
-    if (onCap(t0))
-      t = t0;
-    else if (onCap(t1))
-      t = t1;
-    else
-      return false;
-    hit = p + d * t;
-    normal = Vec3d{hit.x, hit.y, hit.z - R} * s.invRadius;
-    if (dot(normal, d) > 0.0) normal = -normal;
+// One loop for both directions, everything inline. The trace is a chain of
+// dependent square roots and divisions, so the loop keeps them off each
+// other's path: the refraction angle comes from the intersection's
+// discriminant (cos i = sqrt(disc) / |R|), so its square root runs alongside
+// the intersection's, and the roots -b -+ sqrt(disc) need no division (their
+// absolute error, ~1e-16 |b| mm, is far below any optical tolerance).
+template <bool kFromFilm>
+std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm,
+                                         std::vector<Vec3d>* path) const {
+  const auto forward = [](double dz) { return kFromFilm ? dz < 0.0 : dz > 0.0; };
+  if (!isFinite(ray.origin) || !isFinite(ray.direction) || !forward(ray.direction.z)) return std::nullopt;
+  const bool dLine = wavelengthNm == kWavelengthDNm;
+  const int count = surfaceCount();
+  const TraceSurface* const surfaces = surfaces_.data();
+  Vec3d o = ray.origin;
+  Vec3d d = normalize(ray.direction);
+  // Index on the side the ray comes from, carried along for dispersion.
+  double nFrom = dLine ? 1.0 : (kFromFilm ? surfaces[count - 1].after.index(wavelengthNm) : 1.0);
+  for (int k = 0; k < count; ++k) {
+    const int i = kFromFilm ? count - 1 - k : k;
+    const TraceSurface& s = surfaces[i];
+    // The index ratio, or 0 when the surface does not bend the ray.
+    double eta = 0.0;
+    if (dLine) {
+      if (s.refracts) eta = kFromFilm ? s.etaFromFilm : s.etaFromScene;
+    } else {
+      const double n1 = nFrom;
+      nFrom =
+          kFromFilm ? (i > 0 ? surfaces[i - 1].after.index(wavelengthNm) : 1.0) : s.after.index(wavelengthNm);
+      if (!s.isStop && n1 != nFrom) eta = n1 / nFrom;
+    }
+    // Work relative to the vertex: a sphere through the vertex is
+    // x^2 + y^2 + z^2 - 2 R z = 0, which avoids cancellation for large R.
+    const Vec3d p{o.x, o.y, o.z - s.z};
+    if (s.radius == 0.0) {
+      if (d.z == 0.0) return std::nullopt;
+      const double t = -p.z / d.z;
+      if (!(t >= -1e-9)) return std::nullopt;
+      const Vec3d hit = p + d * t;
+      if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return std::nullopt;
+      o = {hit.x, hit.y, hit.z + s.z};
+      if (path) path->push_back(o);
+      if (eta == 0.0) continue;
+      if (!refractEta(d, {0.0, 0.0, d.z > 0.0 ? -1.0 : 1.0}, eta, d)) return std::nullopt;
+    } else {
+      const double R = s.radius;
+      // With c = p.(p - 2C) and b = (p - C).d for the centre C = (0, 0, R),
+      // the hits are at t = -b -+ sqrt(b^2 - c) (d is unit).
+      const double zc = p.z - R;
+      const double b = p.x * d.x + p.y * d.y + zc * d.z;
+      const double c = p.x * p.x + p.y * p.y + p.z * (p.z - 2.0 * R);
+      const double disc = b * b - c;
+      if (!(disc >= 0.0)) return std::nullopt;
+      const double root = std::sqrt(disc);
+      // The first crossing of the cap around the vertex (not the far
+      // hemisphere), and the sign that turns (hit - C) / R into the unit
+      // normal facing the ray: + on the nearer root, - on the farther.
+      double t = -b - root, normalScale = s.absInvRadius;
+      if (!(t >= -1e-9 && (zc + d.z * t) * R < 0.0)) {
+        t = -b + root, normalScale = -s.absInvRadius;
+        if (!(t >= -1e-9 && (zc + d.z * t) * R < 0.0)) return std::nullopt;
+      }
+      const Vec3d hit = p + d * t;
+      if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return std::nullopt;
+      o = {hit.x, hit.y, hit.z + s.z};
+      if (path) path->push_back(o);
+      if (eta == 0.0) continue;
+      // Snell's law with cos i = |(hit - C).d| / |R| = sqrt(disc) / |R|.
+      const double cos2I = std::min(1.0, disc * s.invRadius2);
+      const double sin2T = eta * eta * (1.0 - cos2I);
+      if (sin2T >= 1.0) return std::nullopt;  // total internal reflection
+      const double cosI = root * s.absInvRadius;
+      const double cosT = std::sqrt(1.0 - sin2T);
+      d = d * eta + Vec3d{hit.x, hit.y, hit.z - R} * (normalScale * (eta * cosI - cosT));
+    }
+    if (!forward(d.z)) return std::nullopt;  // turned back
   }
-  if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return false;
-  hit.z += s.z;
-  return true;
+  if (!isFinite(o) || !isFinite(d)) return std::nullopt;
+  return LensRay{o, normalize(d)};
 }
 
 std::optional<LensRay> LensSystem::traceFromFilm(const LensRay& ray, double wavelengthNm,
                                                  std::vector<Vec3d>* path) const {
-  if (!isFinite(ray.origin) || !isFinite(ray.direction) || !(ray.direction.z < 0.0)) return std::nullopt;
-  Vec3d o = ray.origin;
-  Vec3d d = normalize(ray.direction);
-  for (int i = surfaceCount() - 1; i >= 0; --i) {
-    const TraceSurface& s = surfaces_[i];
-    Vec3d hit, normal;
-    if (!intersect(s, o, d, hit, normal)) return std::nullopt;
-    if (path) path->push_back(hit);
-    o = hit;
-    if (s.isStop) continue;
-    const double n1 = indexAfter(i, wavelengthNm);
-    const double n2 = indexAfter(i - 1, wavelengthNm);
-    if (n1 != n2 && !refract(d, normal, n1, n2, d)) return std::nullopt;
-    if (!(d.z < 0.0)) return std::nullopt;  // turned back toward the film
-  }
-  if (!isFinite(o) || !isFinite(d)) return std::nullopt;
-  return LensRay{o, normalize(d)};
+  return trace<true>(ray, wavelengthNm, path);
 }
 
 std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray, double wavelengthNm,
                                                   std::vector<Vec3d>* path) const {
-  if (!isFinite(ray.origin) || !isFinite(ray.direction) || !(ray.direction.z > 0.0)) return std::nullopt;
-  Vec3d o = ray.origin;
-  Vec3d d = normalize(ray.direction);
-  for (int i = 0; i < surfaceCount(); ++i) {
-    const TraceSurface& s = surfaces_[i];
-    Vec3d hit, normal;
-    if (!intersect(s, o, d, hit, normal)) return std::nullopt;
-    if (path) path->push_back(hit);
-    o = hit;
-    if (s.isStop) continue;
-    const double n1 = indexAfter(i - 1, wavelengthNm);
-    const double n2 = indexAfter(i, wavelengthNm);
-    if (n1 != n2 && !refract(d, normal, n1, n2, d)) return std::nullopt;
-    if (!(d.z > 0.0)) return std::nullopt;
-  }
-  if (!isFinite(o) || !isFinite(d)) return std::nullopt;
-  return LensRay{o, normalize(d)};
+  return trace<false>(ray, wavelengthNm, path);
 }
 
 }  // namespace lensrt

@@ -48,20 +48,28 @@ class LensSystem {
                                         std::vector<Vec3d>* path = nullptr) const;
 
  private:
+  // Everything about a surface that does not depend on the ray, laid out for
+  // the trace loop.
   struct TraceSurface {
     double z = 0.0;
     double radius = 0.0;  // 0 = flat
     double invRadius = 0.0;
+    double absInvRadius = 0.0;
+    double invRadius2 = 0.0;
     double apertureRadius = 0.0;
     double apertureRadius2 = 0.0;
+    // n_d before (scene side) / after (film side), and the ratios refract()
+    // takes going each way: precomputed so the d line (no dispersion) costs
+    // no division. `refracts` is false for the stop and between equal media.
+    double etaFromFilm = 1.0;   // ndAfter / ndBefore
+    double etaFromScene = 1.0;  // ndBefore / ndAfter
+    bool refracts = false;
     bool isStop = false;
     double ndAfter = 1.0;  // index after the surface (toward the film) at the d line
     Dispersion after;
   };
-  // Intersect surface s; returns the hit point and the unit normal facing the
-  // incoming ray, or false when missed or outside the clear aperture.
-  static bool intersect(const TraceSurface& s, const Vec3d& o, const Vec3d& d, Vec3d& hit, Vec3d& normal);
-  double indexAfter(int i, double wavelengthNm) const;
+  template <bool kFromFilm>
+  std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path) const;
 
   LensPrescription prescription_;
   ParaxialData paraxial_;
