@@ -7,7 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <regex>
+#include <cctype>
 #include <sstream>
 
 #include "core/error.h"
@@ -60,15 +60,23 @@ bool isGlb(const std::filesystem::path& file, const std::string& name) {
 // line 3, column 7: what"; keep the line for InputError and the rest as text.
 [[noreturn]] void throwParseError(const std::string& name, const std::string& fullErr) {
   // nlohmann quotes the last token read, which in a truncated file can be a
-  // whole data URI: keep the message short, and libstdc++'s std::regex (one
-  // stack frame per character) away from long text - it overflowed the stack.
+  // whole data URI: keep the message short. Parsed by hand: libstdc++'s
+  // std::regex recurses per character and overflowed the stack (fuzz_gltf).
   const std::string err = fullErr.size() > 300 ? fullErr.substr(0, 300) + "..." : fullErr;
-  static const std::regex json(
-      R"(\[json\.exception\.[a-z_.0-9]+\] parse error at line (\d+), column (\d+): (.*))");
-  std::smatch m;
-  if (std::regex_search(err, m, json)) {
-    const int line = m[1].length() < 9 ? std::stoi(m[1].str()) : 0;
-    throw InputError(name, "JSON syntax error at column " + m[2].str() + ": " + m[3].str(), line);
+  const std::string lineKey = "parse error at line ", columnKey = ", column ";
+  const std::size_t l = err.find(lineKey);
+  if (err.rfind("[json.exception.", 0) == 0 && l != std::string::npos) {
+    std::size_t i = l + lineKey.size();
+    std::string lineText, columnText;
+    while (i < err.size() && std::isdigit(static_cast<unsigned char>(err[i]))) lineText += err[i++];
+    if (!lineText.empty() && err.compare(i, columnKey.size(), columnKey) == 0) {
+      i += columnKey.size();
+      while (i < err.size() && std::isdigit(static_cast<unsigned char>(err[i]))) columnText += err[i++];
+      if (!columnText.empty() && err.compare(i, 2, ": ") == 0) {
+        const int line = lineText.size() < 9 ? std::stoi(lineText) : 0;
+        throw InputError(name, "JSON syntax error at column " + columnText + ": " + err.substr(i + 2), line);
+      }
+    }
   }
   throw InputError(name, err);
 }
