@@ -1,5 +1,6 @@
 #include "scene/render_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <string>
@@ -13,9 +14,7 @@ namespace lensrt {
 namespace {
 
 // Zero-scale placements have no area (and no inverse for normals): nothing to
-// hit. Nearly singular ones neither, and Embree inverts instance transforms in
-// float: a scale like 1e-38 sent rays beyond its valid range (an assertion
-// abort inside rtcIntersect1; found by fuzz_gltf).
+// hit. Nearly singular ones neither (a scale like 1e-38; found by fuzz_gltf).
 bool degenerate(const Transform& xf) {
   const double det = xf.determinant3x3();
   if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) return true;
@@ -23,8 +22,30 @@ bool degenerate(const Transform& xf) {
   const Transform::Matrix& inv = inverse.matrix();
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c)
-      if (!(std::abs(inv[r][c]) < 1e15)) return true;
+      if (!std::isfinite(inv[r][c])) return true;
   return false;
+}
+
+// Largest |entry| of the 3x3 linear part.
+double maxLinear(const Transform::Matrix& m) {
+  double v = 0;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) v = std::max(v, std::abs(m[r][c]));
+  return v;
+}
+
+// Embree inverts an instance transform in float and moves each ray into the
+// instance's space; its rays must stay within |x| < 1.8e18 (ray.valid(), an
+// assertion abort otherwise). A placement that scales by more than 1e6 or less
+// than 1e-6, or would map a ray from `reach` (the largest coordinate a ray
+// starts from) beyond 1e17, is baked into world space instead, which costs
+// memory but nothing else (found by fuzz_gltf: unnormalised instance scales
+// of 1e-18..1e37 on a flat mesh).
+bool instanceable(const Transform& xf, double reach) {
+  const Transform::Matrix& m = xf.matrix();
+  const double forward = maxLinear(m), inverse = maxLinear(xf.inverse().matrix());
+  const double translation = std::max({std::abs(m[0][3]), std::abs(m[1][3]), std::abs(m[2][3])});
+  return forward <= 1e6 && inverse <= 1e6 && 3.0 * inverse * (reach + translation) <= 1e17;
 }
 
 // Embree reports errors through a callback; C code cannot carry exceptions, so
@@ -193,9 +214,32 @@ void RenderScene::Impl::build() {
     return s;
   };
 
+  // Rays start on the geometry, at a camera or at the default view (a few
+  // scene radii out): a generous bound on their coordinates.
+  const Bounds3f world = desc.worldBounds();
+  double reach = 1.0;
+  for (int a = 0; a < 3; ++a)
+    reach = std::max({reach, std::abs(double(world.lo[a])), std::abs(double(world.hi[a]))});
+  for (const CameraDesc& c : desc.cameras) {
+    const Vec3d eye = c.worldFromCamera.point(Vec3d(0, 0, 0));
+    reach = std::max({reach, std::abs(eye.x), std::abs(eye.y), std::abs(eye.z)});
+  }
+  reach *= 8.0;
+
+  // Per instance: skipped (degenerate), baked into world space, or placed as an Embree instance.
+  enum class Placement { Skip, Bake, Instance };
+  std::vector<Placement> placement(desc.instances.size(), Placement::Skip);
   std::vector<int> uses(desc.meshes.size(), 0);
-  for (const MeshInstance& inst : desc.instances)
-    if (desc.meshes[inst.mesh].triangleCount() > 0 && !degenerate(inst.worldFromObject)) ++uses[inst.mesh];
+  for (std::size_t i = 0; i < desc.instances.size(); ++i) {
+    const MeshInstance& inst = desc.instances[i];
+    if (desc.meshes[inst.mesh].triangleCount() == 0 || degenerate(inst.worldFromObject)) continue;
+    placement[i] = instanceable(inst.worldFromObject, reach) ? Placement::Instance : Placement::Bake;
+    if (placement[i] == Placement::Instance) ++uses[inst.mesh];
+  }
+  // A mesh placed once is baked too.
+  for (std::size_t i = 0; i < desc.instances.size(); ++i)
+    if (placement[i] == Placement::Instance && uses[desc.instances[i].mesh] < 2)
+      placement[i] = Placement::Bake;
 
   sharedScenes.resize(desc.meshes.size());
   for (std::size_t i = 0; i < desc.meshes.size(); ++i) {
@@ -212,9 +256,9 @@ void RenderScene::Impl::build() {
   top = newScene();
   for (std::size_t i = 0; i < desc.instances.size(); ++i) {
     const MeshInstance& inst = desc.instances[i];
-    if (uses[inst.mesh] == 0 || degenerate(inst.worldFromObject)) continue;
+    if (placement[i] == Placement::Skip) continue;
     EmbreeGeometry geom;
-    if (uses[inst.mesh] == 1) {
+    if (placement[i] == Placement::Bake) {
       geom = newTriangles(inst.mesh, &inst.worldFromObject);
       ++stats.bakedGeometries;
     } else {

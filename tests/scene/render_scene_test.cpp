@@ -144,6 +144,38 @@ TEST(RenderScene, SharedMeshBecomesEmbreeInstancesHitOnBothCopies) {
   EXPECT_NEAR(b.hi.x, 7, 1e-4f);
 }
 
+// Embree inverts instance transforms in float and aborts (ray.valid()) when
+// a ray leaves float range in instance space; a flat quad squashed by 1e-20
+// along z and stretched by 1e8 in x (fuzz_gltf found such placements) is
+// baked into world space instead, and is hit exactly where its world-space
+// corners say.
+TEST(RenderScene, ExtremePlacementsOfASharedMeshAreBakedNotInstanced) {
+  SceneDesc d;
+  d.meshes.push_back(quad());
+  d.instances.push_back({0, Transform::translate({-5, 0, 0})});
+  d.instances.push_back({0, Transform::translate({0, 0, 2})});
+  d.instances.push_back({0, Transform::translate({0, 20, 0}) * Transform::scale({1e8, 1, 1e-20})});
+  const RenderScene scene(std::move(d));
+  EXPECT_EQ(scene.stats().sharedMeshes, 1);
+  EXPECT_EQ(scene.stats().embreeInstances, 2);
+  EXPECT_EQ(scene.stats().bakedGeometries, 1);
+  // The stretched quad spans x in [-1e8, 1e8], y in [19, 21] at z = 0.
+  const auto far = scene.intersect(down(5e7f, 20.5f));
+  ASSERT_TRUE(far);
+  EXPECT_EQ(far->instance, 2);
+  EXPECT_NEAR(far->t, 5.0f, 1e-4f);
+  expectVec(far->geometricNormal, {0, 0, 1});
+  EXPECT_FALSE(scene.intersect(down(5e7f, 21.5f)));
+  // The two well-scaled copies stay Embree instances and are hit where placed.
+  const auto left = scene.intersect(down(-5.5f, 0.5f));
+  ASSERT_TRUE(left);
+  EXPECT_EQ(left->instance, 0);
+  const auto raised = scene.intersect(down(0.5f, 0.5f));
+  ASSERT_TRUE(raised);
+  EXPECT_EQ(raised->instance, 1);
+  EXPECT_NEAR(raised->t, 3.0f, 1e-5f);
+}
+
 // Material with a 2x1 nearest texture: left texel transparent, right opaque.
 SceneDesc maskedQuadOverFloor(AlphaMode mode, float cutoff, float leftAlpha) {
   SceneDesc d = oneQuad(Transform::translate({0, 0, 1}));
