@@ -10,49 +10,13 @@
 #include "camera/thin_lens_camera.h"
 #include "core/constants.h"
 #include "render/environment.h"
-#include "render/integrator.h"
-#include "render/lights.h"
-#include "render/material_eval.h"
-#include "render/renderer.h"
-#include "scene/render_scene.h"
+#include "render_test_util.h"
 
 namespace lensrt {
 namespace {
 
-// A square of side `size` centred on the -Z axis at distance `distance`,
-// facing the camera; emissive with radiance `emission` when given.
-SceneDesc squareScene(float distance, float size, float emission) {
-  SceneDesc s;
-  s.sourceFile = "camera render test (in code)";
-  Mesh m;
-  m.name = "square";
-  const float h = size / 2;
-  m.positions = {{-h, -h, -distance}, {h, -h, -distance}, {h, h, -distance}, {-h, h, -distance}};
-  m.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise seen from +Z (the camera)
-  m.material = 0;
-  s.meshes.push_back(std::move(m));
-  Material mat;
-  mat.baseColor = {0, 0, 0, 1};
-  mat.metallic = 0;
-  mat.emissive = {emission, emission, emission};
-  mat.doubleSided = true;
-  s.materials.push_back(mat);
-  s.instances.push_back({0, Transform()});
-  return s;
-}
-
-Image render(SceneDesc desc, const Camera& camera, const Environment& env, int spp) {
-  const RenderScene scene(std::move(desc));
-  const MaterialTable materials(scene.desc());
-  const LightSet lights(materials, env, scene.bounds());
-  IntegratorSettings is;
-  is.maxDepth = 1;
-  const Integrator integrator(scene, materials, lights, env, is);
-  RenderSettings rs;
-  rs.samplesPerPixel = spp;
-  rs.seed = 3;
-  return renderImage(camera, integrator, rs).image;
-}
+using test::renderScene;
+using test::squareScene;
 
 // Under a uniform sky of radiance 1 the normalized thin lens focused at
 // infinity records cos^4 of the field angle: compared, pixel by pixel along
@@ -66,9 +30,11 @@ TEST(CameraRender, ThinLensShowsCos4FalloffUnderAUniformSky) {
   const ThinLensCamera cam(Transform(), film, p);
   // The square sits behind the camera: out of view, only the sky is seen.
   SceneDesc desc = squareScene(-5.0f, 0.1f, 0.0f);
-  const Image img = render(std::move(desc), cam, Environment::constant({1, 1, 1}), 16);
-  const int r = img.channelIndex("R");
-  for (const auto [x, y] : {std::pair{24, 16}, std::pair{30, 12}, std::pair{40, 5}, std::pair{47, 0}}) {
+  const test::RenderedImage rendered =
+      renderScene(std::move(desc), cam, Environment::constant({1, 1, 1}), 16);
+  const Image& img = rendered.image;
+  const int r = rendered.red;
+  for (const auto& [x, y] : {std::pair{24, 16}, std::pair{30, 12}, std::pair{40, 5}, std::pair{47, 0}}) {
     double expected = 0;
     const int n = 64;
     for (int j = 0; j < n; ++j)
@@ -98,13 +64,8 @@ TEST(CameraRender, ThinLensBlursAnEdgeByTheBlurDisk) {
   const ThinLensCamera cam(Transform(), film, p);
   SceneDesc desc = squareScene(float(d / 1000), 0.4f, 1.0f);
   for (Vec3f& v : desc.meshes[0].positions) v.x = std::max(v.x, 0.0f);  // keep x >= 0: a half-plane
-  const Image img = render(std::move(desc), cam, Environment(), 128);
-  const int r = img.channelIndex("R");
-  std::vector<double> profile(film.width, 0.0);
-  for (int x = 0; x < film.width; ++x) {
-    for (int y = 0; y < film.height; ++y) profile[x] += img.at(x, y, r);
-    profile[x] /= film.height;
-  }
+  const std::vector<double> profile =
+      test::columnProfile(renderScene(std::move(desc), cam, Environment(), 128));
   double plateau = 0;
   for (int x = film.width - 16; x < film.width; ++x) plateau += profile[x] / 16;
   const double v = f * s / (s - f), vd = f * d / (d - f);
