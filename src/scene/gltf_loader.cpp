@@ -4,10 +4,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <map>
-#include <cctype>
 #include <sstream>
 
 #include "core/error.h"
@@ -36,7 +37,53 @@ std::string oneLine(const std::string& text) {
   return out;
 }
 
-bool isGlb(const std::filesystem::path& file, const std::string& name) {
+std::uint32_t littleEndian32(const unsigned char* b) {
+  return b[0] | (b[1] << 8) | (b[2] << 16) | (std::uint32_t{b[3]} << 24);
+}
+
+// The .glb layout (12-byte header, JSON chunk, optional BIN chunk), checked
+// here because tinygltf says only "Invalid glTF binary." and lets a BIN chunk
+// header run 8 bytes past the declared length.
+void checkGlbLayout(const std::filesystem::path& file, const std::string& name, std::uint64_t fileSize) {
+  std::ifstream in(file, std::ios::binary);
+  std::array<unsigned char, 28> b{};
+  in.read(reinterpret_cast<char*>(b.data()), b.size());
+  const auto got = static_cast<std::size_t>(in.gcount());
+  const std::string size = std::to_string(fileSize) + " byte" + (fileSize == 1 ? "" : "s");
+  if (got < 20)
+    throw InputError(name, "truncated .glb: the file has " + size +
+                               ", less than the 12-byte header and the JSON chunk header");
+  const std::uint64_t declared = littleEndian32(&b[8]);
+  const std::uint64_t jsonLength = littleEndian32(&b[12]);
+  const std::uint64_t jsonEnd = 20 + jsonLength;
+  if (declared > fileSize)
+    throw InputError(name, "truncated .glb: the header declares " + std::to_string(declared) +
+                               " bytes but the file has " + size);
+  if (littleEndian32(&b[16]) != 0x4E4F534Au)
+    throw InputError(name, "broken .glb: the first chunk is not the JSON chunk");
+  if (jsonLength == 0) throw InputError(name, "broken .glb: the JSON chunk is empty");
+  if (jsonEnd > declared)
+    throw InputError(name, "broken .glb: the JSON chunk (" + std::to_string(jsonLength) +
+                               " bytes) runs past the declared length of " + std::to_string(declared) +
+                               " bytes");
+  if (jsonEnd == declared) return;  // no BIN chunk
+  if (jsonEnd + 8 > declared)
+    throw InputError(name, "broken .glb: " + std::to_string(declared - jsonEnd) +
+                               " stray bytes after the JSON chunk (too few for a chunk header)");
+  std::array<unsigned char, 8> chunk{};
+  in.seekg(static_cast<std::streamoff>(jsonEnd));
+  in.read(reinterpret_cast<char*>(chunk.data()), chunk.size());
+  if (in.gcount() != 8) throw InputError(name, "truncated .glb: the BIN chunk header is cut off");
+  const std::uint64_t binLength = littleEndian32(&chunk[0]);
+  if (littleEndian32(&chunk[4]) != 0x004E4942u)
+    throw InputError(name, "broken .glb: the chunk after the JSON chunk is not a BIN chunk");
+  if (jsonEnd + 8 + binLength > declared)
+    throw InputError(name, "truncated .glb: the BIN chunk declares " + std::to_string(binLength) +
+                               " bytes but only " + std::to_string(declared - jsonEnd - 8) +
+                               " follow it within the declared length");
+}
+
+bool isGlb(const std::filesystem::path& file, const std::string& name, std::uint64_t fileSize) {
   std::ifstream in(file, std::ios::binary);
   std::array<unsigned char, 12> header{};
   in.read(reinterpret_cast<char*>(header.data()), header.size());
@@ -49,10 +96,10 @@ bool isGlb(const std::filesystem::path& file, const std::string& name) {
     return false;
   }
   if (got < 12) throw InputError(name, "truncated .glb header");
-  const std::uint32_t version =
-      header[4] | (header[5] << 8) | (header[6] << 16) | (std::uint32_t{header[7]} << 24);
+  const std::uint32_t version = littleEndian32(&header[4]);
   if (version != 2)
     throw InputError(name, "unsupported .glb version " + std::to_string(version) + " (expected 2)");
+  checkGlbLayout(file, name, fileSize);
   return true;
 }
 
@@ -85,8 +132,10 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(name, "file not found");
   if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name, "not a regular file");
-  if (std::filesystem::file_size(file, ec) == 0) throw InputError(name, "file is empty");
-  const bool binary = isGlb(file, name);
+  const std::uint64_t fileSize = std::filesystem::file_size(file, ec);
+  if (ec) throw InputError(name, "cannot read: " + ec.message());
+  if (fileSize == 0) throw InputError(name, "file is empty");
+  const bool binary = isGlb(file, name, fileSize);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(gltf::deferImageDecoding, nullptr);
   tinygltf::Model model;
@@ -264,6 +313,12 @@ class Traversal {
         !node.name.empty() ? node.name : (!gc.name.empty() ? gc.name : "node " + std::to_string(index));
     cam.node = index;
     cam.worldFromCamera = cameraFrame(world);
+    // Embree takes no ray starting beyond 1.8e18; the geometry's own limit applies.
+    const Vec3d eye = cam.worldFromCamera.point(Vec3d(0, 0, 0));
+    if (!(std::abs(eye.x) <= gltf::kMaxCoordinate && std::abs(eye.y) <= gltf::kMaxCoordinate &&
+          std::abs(eye.z) <= gltf::kMaxCoordinate))
+      ctx_.fail("camera '" + cam.name + "' (node " + std::to_string(index) +
+                ") is placed beyond 1e15 (check the node transforms)");
     if (gc.type == "orthographic") {
       cam.orthographic = true;
       ctx_.warnings.warn("orthographic cameras are not supported: camera '" + cam.name +

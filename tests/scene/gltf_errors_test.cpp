@@ -138,8 +138,71 @@ TEST(GltfErrors, GlbWithWrongHeader) {
 
 TEST(GltfErrors, TruncatedGlb) {
   std::vector<std::uint8_t> bytes = validSquare().glb();
-  bytes.resize(bytes.size() - 30);
-  EXPECT_NE(errorOf(test::writeFile(test::testDir() / "short.glb", bytes)), "");
+  const std::size_t full = bytes.size();
+  bytes.resize(full - 30);
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "short.glb", bytes)),
+            "truncated .glb: the header declares " + std::to_string(full) + " bytes but the file has " +
+                std::to_string(full - 30) + " bytes");
+  bytes.resize(14);
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "header.glb", bytes)),
+            "truncated .glb: the file has 14 bytes, less than the 12-byte header and the JSON chunk header");
+}
+
+// The chunk layout of a .glb: little-endian u32 at `offset`.
+void putU32(std::vector<std::uint8_t>& bytes, std::size_t offset, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) bytes[offset + i] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+std::uint32_t getU32(const std::vector<std::uint8_t>& bytes, std::size_t offset) {
+  std::uint32_t v = 0;
+  for (int i = 0; i < 4; ++i) v |= std::uint32_t{bytes[offset + i]} << (8 * i);
+  return v;
+}
+
+TEST(GltfErrors, GlbChunksMustFitTheDeclaredLength) {
+  const std::vector<std::uint8_t> good = validSquare().glb();
+  const std::uint32_t jsonLength = getU32(good, 12);
+  const std::size_t binHeader = 20 + jsonLength;
+  const std::uint32_t binLength = getU32(good, binHeader);
+  ASSERT_EQ(good.size(), binHeader + 8 + binLength);
+
+  // A BIN chunk claiming 8 bytes more than the file holds (tinygltf 2.7 reads past the end).
+  std::vector<std::uint8_t> bytes = good;
+  putU32(bytes, binHeader, binLength + 8);
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "bin.glb", bytes)),
+            "truncated .glb: the BIN chunk declares " + std::to_string(binLength + 8) + " bytes but only " +
+                std::to_string(binLength) + " follow it within the declared length");
+
+  bytes = good;
+  putU32(bytes, 12, static_cast<std::uint32_t>(good.size()));
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "json.glb", bytes)),
+            "broken .glb: the JSON chunk (" + std::to_string(good.size()) +
+                " bytes) runs past the declared length of " + std::to_string(good.size()) + " bytes");
+
+  bytes = good;
+  putU32(bytes, 16, 0x004E4942);  // BIN where JSON belongs
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "order.glb", bytes)),
+            "broken .glb: the first chunk is not the JSON chunk");
+
+  bytes = good;
+  putU32(bytes, binHeader + 4, 0x12345678);
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "type.glb", bytes)),
+            "broken .glb: the chunk after the JSON chunk is not a BIN chunk");
+
+  // Bytes after the declared length are ignored, as the glTF spec allows readers to.
+  bytes = good;
+  bytes.insert(bytes.end(), 16, 0);
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "trailing.glb", bytes)), "");
+}
+
+// Embree aborts on a ray starting beyond 1.8e18; a camera is held to the
+// same 1e15 limit as the geometry.
+TEST(GltfErrors, CameraBeyondTheCoordinateLimit) {
+  GltfBuilder b = validSquare();
+  b.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}};
+  b.node({{"name", "far"}, {"camera", 0}, {"translation", {0, 0, 2e15}}});
+  EXPECT_EQ(errorOf(b), "camera 'far' (node 1) is placed beyond 1e15 (check the node transforms)");
+  b.doc["nodes"][1]["translation"] = {0, 0, 5e14};
+  EXPECT_EQ(errorOf(b), "");
 }
 
 TEST(GltfErrors, SceneIndexOutOfRange) {
