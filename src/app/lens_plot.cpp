@@ -63,7 +63,18 @@ void legendEntry(Svg& svg, Vec2d at, const std::string& cls, const std::string& 
 
 }  // namespace
 
-Svg plotRelativeIllumination(const LensView& view) {
+std::string PlotTable::csv() const {
+  std::string out;
+  for (std::size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + columns[i];
+  out += '\n';
+  for (const auto& row : rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) out += fmt::format("{}{:.9g}", i ? "," : "", row[i]);
+    out += '\n';
+  }
+  return out;
+}
+
+LensPlot plotRelativeIllumination(const LensView& view) {
   Svg svg =
       page(view, "relative illumination",
            "RI(r) = E(r) / E(0): film irradiance from a uniform Lambertian scene, i.e. the projected solid "
@@ -83,7 +94,9 @@ Svg plotRelativeIllumination(const LensView& view) {
   frame.drawAxes(svg);
   sensorMarkers(svg, frame, view, 1.1, maxR);
   std::vector<Vec2d> ri, vig, cos4;
+  PlotTable table{{"film_radius_mm", "relative_illumination", "vignetting", "cos4"}, {}};
   for (const auto& p : curve) {
+    table.rows.push_back({p.filmRadiusMm, p.relative, p.areaRatio, p.cos4});
     ri.push_back({p.filmRadiusMm, p.relative});
     vig.push_back({p.filmRadiusMm, p.areaRatio});
     if (p.areaRatio > 0.0) cos4.push_back({p.filmRadiusMm, p.cos4});
@@ -101,10 +114,10 @@ Svg plotRelativeIllumination(const LensView& view) {
                "the passing area.",
                view.filmDistanceMm),
            "class=\"note\"");
-  return svg;
+  return {std::move(svg), std::move(table)};
 }
 
-Svg plotDistortion(const LensView& view) {
+LensPlot plotDistortion(const LensView& view) {
   Svg svg =
       page(view, "distortion",
            "D = 100 (y_real \u2212 y_paraxial) / y_paraxial: the real chief ray (through the stop centre) "
@@ -134,7 +147,11 @@ Svg plotDistortion(const LensView& view) {
   sensorMarkers(svg, frame, view, y.hi, x.hi);
   svg.line(frame.map({x.lo, 0.0}), frame.map({x.hi, 0.0}), "class=\"zero\"");
   std::vector<Vec2d> pts;
-  for (const auto& d : curve) pts.push_back({d.realHeightMm, d.percent});
+  PlotTable table{{"field_angle_deg", "real_height_mm", "paraxial_height_mm", "distortion_percent"}, {}};
+  for (const auto& d : curve) {
+    pts.push_back({d.realHeightMm, d.percent});
+    table.rows.push_back({d.fieldAngleDeg, d.realHeightMm, d.paraxialHeightMm, d.percent});
+  }
   frame.series(svg, pts, "class=\"dist\" id=\"distortion\"");
   if (!curve.empty()) {
     const auto& last = curve.back();
@@ -150,10 +167,10 @@ Svg plotDistortion(const LensView& view) {
                "The chief ray is blocked beyond this field: the image circle is smaller than the sensor.",
                "class=\"note\"");
   }
-  return svg;
+  return {std::move(svg), std::move(table)};
 }
 
-Svg plotSpotDiagrams(const LensView& view) {
+LensPlot plotSpotDiagrams(const LensView& view) {
   Svg svg =
       page(view, "spot diagrams",
            "Film intersections of a uniform grid of rays over the passing beam, for fields whose chief rays "
@@ -183,8 +200,13 @@ Svg plotSpotDiagrams(const LensView& view) {
   widenToTicks(lo, hi, 4);
   const double half = std::max(-lo, hi);
   const double size = 230.0, gap = 50.0, left = 90.0, top = 150.0;
+  PlotTable table{{"field_angle_deg", "image_height_mm", "dx_um", "dy_um"}, {}};
   for (std::size_t i = 0; i < spots.size(); ++i) {
     const SpotDiagram& s = spots[i];
+    for (const Vec2d& p : s.points) {
+      const Vec2d d = (p - s.centroid) * 1000.0;
+      table.rows.push_back({s.field.angleDeg, heights[i], d.x, d.y});
+    }
     const PlotFrame frame({left + i * (size + gap), top}, size, size,
                           PlotAxis{-half, half, "x \u2212 centroid (\u00b5m)", 4},
                           PlotAxis{-half, half, i == 0 ? "y \u2212 centroid (\u00b5m)" : "", 4});
@@ -221,7 +243,7 @@ Svg plotSpotDiagrams(const LensView& view) {
                  "is smaller than the sensor diagonal.",
                  limit.angleDeg, limit.imageHeightMm),
              "class=\"note\"");
-  return svg;
+  return {std::move(svg), std::move(table)};
 }
 
 }  // namespace lensrt

@@ -2,13 +2,35 @@
 // relative illumination, distortion and spot diagrams.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "app/lens_plot_setup.h"
 #include "app/svg_writer.h"
 
 namespace lensrt {
 
-Svg plotRelativeIllumination(const LensView& view);
-Svg plotDistortion(const LensView& view);
-Svg plotSpotDiagrams(const LensView& view);
+// The plotted series as numbers: named columns, one row per plotted point.
+struct PlotTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  // A header line of the column names, then one comma-separated line per row
+  // (9 significant digits).
+  std::string csv() const;
+};
+
+// A plot drawn once and its data, so --csv matches the picture exactly.
+struct LensPlot {
+  Svg svg;
+  PlotTable table;
+};
+
+// Columns: film_radius_mm, relative_illumination, vignetting, cos4.
+LensPlot plotRelativeIllumination(const LensView& view);
+// Columns: field_angle_deg, real_height_mm, paraxial_height_mm, distortion_percent.
+LensPlot plotDistortion(const LensView& view);
+// Columns: field_angle_deg, image_height_mm, dx_um, dy_um (each ray's film
+// point from its spot's centroid; every ray, also those outside the drawing).
+LensPlot plotSpotDiagrams(const LensView& view);
 
 }  // namespace lensrt

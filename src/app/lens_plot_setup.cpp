@@ -3,8 +3,12 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include "core/constants.h"
 #include "core/error.h"
@@ -43,10 +47,10 @@ double parseFocusMm(const std::string& text) {
 
 }  // namespace
 
-void addLensViewOptions(CLI::App& command, LensViewOptions& o) {
+void addLensViewOptions(CLI::App& command, LensViewOptions& o, bool outputRequired) {
   command.add_option("lens", o.lens, "Lens file (.lens, .json, .dat) or library name, e.g. dgauss-50mm")
       ->required();
-  command.add_option("-o,--output", o.output, "Output SVG file")->required();
+  command.add_option("-o,--output", o.output, "Output SVG file")->required(outputRequired);
   command.add_option("--fstop", o.fNumber, "Stop down to this f-number (default: widest)");
   command.add_option("--focus", o.focus, "Focus distance in metres from the entrance pupil, or 'inf'")
       ->capture_default_str();
@@ -58,6 +62,11 @@ void checkSvgOutput(const std::string& output) {
   const std::filesystem::path file(output);
   if (file.extension() != ".svg")
     throw CLI::ValidationError("--output", "expected a .svg file, got '" + output + "'");
+  checkOutputDirectory(output);
+}
+
+void checkOutputDirectory(const std::string& output) {
+  const std::filesystem::path file(output);
   // Fail before the tracing, not after: the directory must take a new file.
   const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
   std::error_code ec;
@@ -65,6 +74,36 @@ void checkSvgOutput(const std::string& output) {
     throw InputError(output, "cannot write: directory '" + dir.string() + "' does not exist");
   if (::access(dir.c_str(), W_OK) != 0)
     throw InputError(output, "cannot write: directory '" + dir.string() + "' is not writable");
+}
+
+void writeTextOutput(const std::string& output, const std::string& text) {
+  if (output == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+    return;
+  }
+  const std::filesystem::path file(output);
+  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  const std::filesystem::path tmp =
+      dir / fmt::format(".{}.tmp-{}", file.filename().string(), static_cast<long>(::getpid()));
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(output, std::string("cannot write: ") + std::strerror(errno));
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw InputError(output, "cannot write: disk full or I/O error");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw InputError(output, "cannot write: " + ec.message());
+  }
 }
 
 double LensView::halfDiagonalMm() const {
@@ -82,7 +121,7 @@ std::string LensView::summary() const {
 }
 
 LensView prepareLensView(const LensViewOptions& o, Warnings& warnings) {
-  checkSvgOutput(o.output);
+  if (!o.output.empty()) checkSvgOutput(o.output);
   double w = 0.0, h = 0.0;
   parseSensor(o.sensor, w, h);
   const double focusMm = parseFocusMm(o.focus);

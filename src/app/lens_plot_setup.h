@@ -19,8 +19,10 @@ struct LensViewOptions {
   std::string sensor = "36x24";
 };
 
-// Registers FILE, -o/--output (required), --fstop, --focus and --sensor.
-void addLensViewOptions(CLI::App& command, LensViewOptions& options);
+// Registers FILE, -o/--output, --fstop, --focus and --sensor; -o is
+// required unless `outputRequired` is false (the command then has another
+// output and checks that one of them is given).
+void addLensViewOptions(CLI::App& command, LensViewOptions& options, bool outputRequired = true);
 
 struct LensView {
   LensSystem lens;
@@ -36,11 +38,19 @@ struct LensView {
 };
 
 // Validates the option values (CLI::ValidationError: exit 2), loads, stops
-// down and focuses the lens (InputError: exit 1).
+// down and focuses the lens (InputError: exit 1). An empty output is not checked.
 LensView prepareLensView(const LensViewOptions& options, Warnings& warnings);
 
 // The output must be an .svg path (CLI::ValidationError) in an existing,
 // writable directory (InputError).
 void checkSvgOutput(const std::string& output);
+
+// Any output file: its directory must exist and be writable (InputError),
+// checked before the work so a mistake costs no tracing.
+void checkOutputDirectory(const std::string& output);
+
+// Writes `text` atomically (a temporary beside the target, renamed over it);
+// "-" writes to standard output. InputError(file, reason) on failure.
+void writeTextOutput(const std::string& output, const std::string& text);
 
 }  // namespace lensrt

@@ -3,6 +3,7 @@
 // errors with the right exit status that leave an existing output untouched.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -184,6 +185,117 @@ TEST(LensPlotCli, EachPlotIsWellFormedWithItsCurveAxesAndLabels) {
   }
 }
 
+// Parses `lens plot --csv` output: the header's names, then rows of numbers
+// (every row as wide as the header, or the test fails).
+struct Csv {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  std::size_t column(const std::string& name) const {
+    const auto it = std::find(columns.begin(), columns.end(), name);
+    EXPECT_NE(it, columns.end()) << "no column " << name;
+    return static_cast<std::size_t>(it - columns.begin());
+  }
+};
+
+Csv parseCsv(const std::string& text) {
+  Csv csv;
+  const auto all = cli::lines(text);
+  if (all.empty()) {
+    ADD_FAILURE() << "empty CSV";
+    return csv;
+  }
+  std::istringstream header(all[0]);
+  for (std::string name; std::getline(header, name, ',');) csv.columns.push_back(name);
+  for (std::size_t i = 1; i < all.size(); ++i) {
+    std::vector<double> row;
+    std::istringstream in(all[i]);
+    for (std::string cell; std::getline(in, cell, ',');) {
+      std::size_t used = 0;
+      row.push_back(std::stod(cell, &used));
+      EXPECT_EQ(used, cell.size()) << "not a number: " << cell;
+      EXPECT_TRUE(std::isfinite(row.back())) << "line " << i + 1;
+    }
+    EXPECT_EQ(row.size(), csv.columns.size()) << "line " << i + 1;
+    csv.rows.push_back(row);
+  }
+  return csv;
+}
+
+// --csv writes the plotted series with the documented columns, with or
+// without the SVG, to a file or to standard output. The numbers obey closed
+// forms: relative illumination is 1 on the axis and the radii reach the
+// sensor's half diagonal; the paraxial height is EFL tan(theta) (focused at
+// infinity) with the EFL of the lens (50 mm nominal); each spot's offsets
+// from its centroid average to zero.
+TEST(LensPlotCli, CsvHoldsThePlottedSeriesWithNamedColumns) {
+  const TempDir dir;
+  const std::string lens = kLensDir + "dgauss-50mm.dat";
+  {
+    const std::string csvFile = (dir / "ri.csv").string(), svgFile = (dir / "ri.svg").string();
+    const RunResult r = runLensrt({"lens", "plot", lens, "--what", "relative-illumination", "--fstop", "4",
+                                   "--sensor", "36x24", "-o", svgFile, "--csv", csvFile});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(svgFile));
+    const std::string text = readFile(csvFile);
+    const Csv csv = parseCsv(text);
+    EXPECT_EQ(csv.columns,
+              (std::vector<std::string>{"film_radius_mm", "relative_illumination", "vignetting", "cos4"}));
+    ASSERT_GE(csv.rows.size(), 20u);
+    EXPECT_EQ(csv.rows.front()[0], 0.0);
+    EXPECT_EQ(csv.rows.front()[1], 1.0);
+    EXPECT_NEAR(csv.rows.back()[0], std::hypot(36.0, 24.0) / 2, 1e-6);
+    for (std::size_t i = 1; i < csv.rows.size(); ++i) {
+      EXPECT_GT(csv.rows[i][0], csv.rows[i - 1][0]) << "radii ascend";
+      EXPECT_LT(csv.rows[i][3], csv.rows[i - 1][3]) << "cos^4 falls off axis";
+    }
+    EXPECT_LT(csv.rows.back()[1], csv.rows.back()[3]) << "vignetting takes more than cos^4 at the corner";
+    // The same data on standard output, and no SVG without -o.
+    const RunResult out = runLensrt({"lens", "plot", lens, "--what", "relative-illumination", "--fstop", "4",
+                                     "--sensor", "36x24", "--csv", "-"});
+    ASSERT_EQ(out.status, 0) << out.err;
+    EXPECT_EQ(out.out, text);
+  }
+  {
+    const RunResult r = runLensrt({"lens", "plot", lens, "--what", "distortion", "--csv", "-"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    EXPECT_EQ(csv.columns, (std::vector<std::string>{"field_angle_deg", "real_height_mm",
+                                                     "paraxial_height_mm", "distortion_percent"}));
+    ASSERT_GE(csv.rows.size(), 20u);
+    for (const auto& row : csv.rows) {
+      if (row[0] == 0.0) continue;
+      const double efl = row[2] / std::tan(row[0] * M_PI / 180);
+      EXPECT_NEAR(efl, 50.0, 1.0) << "paraxial height / tan(angle) at " << row[0] << " deg";
+      EXPECT_NEAR(row[3], 100 * (row[1] - row[2]) / row[2], 1e-6);
+    }
+  }
+  {
+    const RunResult r = runLensrt({"lens", "plot", lens, "--what", "spot", "--fstop", "8", "--csv", "-"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Csv csv = parseCsv(r.out);
+    EXPECT_EQ(csv.columns,
+              (std::vector<std::string>{"field_angle_deg", "image_height_mm", "dx_um", "dy_um"}));
+    std::map<double, std::vector<double>> fields;  // angle -> sum dx, sum dy, count
+    for (const auto& row : csv.rows) {
+      auto& f = fields[row[0]];
+      f.resize(3);
+      f[0] += row[2];
+      f[1] += row[3];
+      f[2] += 1;
+    }
+    ASSERT_EQ(fields.size(), 3u) << "three fields";
+    EXPECT_EQ(fields.begin()->first, 0.0);
+    for (const auto& [angle, f] : fields) {
+      EXPECT_GT(f[2], 100) << "rays at " << angle << " deg";
+      EXPECT_NEAR(f[0] / f[2], 0.0, 1e-6) << "mean dx (um) at " << angle << " deg";
+      EXPECT_NEAR(f[1] / f[2], 0.0, 1e-6) << "mean dy (um) at " << angle << " deg";
+    }
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+    EXPECT_TRUE(entry.path().filename() == "ri.csv" || entry.path().filename() == "ri.svg")
+        << "no temporary left behind: " << entry.path();
+}
+
 TEST(LensPlotCli, BadArgumentsFailWithOneLineAndLeaveTheOutputAlone) {
   const TempDir dir;
   const std::string out = (dir / "keep.svg").string();
@@ -202,6 +314,11 @@ TEST(LensPlotCli, BadArgumentsFailWithOneLineAndLeaveTheOutputAlone) {
       {{"lens", "diagram", "dgauss-50mm", "--focus", "0.01", "-o", out}, 1},
       {{"lens", "plot", "dgauss-50mm", "--what", "distortion", "-o", (dir / "missing" / "d.svg").string()},
        1},
+      {{"lens", "plot", "dgauss-50mm", "--what", "distortion"}, 2},  // neither -o nor --csv
+      {{"lens", "plot", "dgauss-50mm", "--what", "spot", "--csv", (dir / "missing" / "s.csv").string()}, 1},
+      {{"lens", "plot", "dgauss-50mm", "--what", "spot", "--csv", (dir / "s.csv").string(), "-o",
+        out + ".png"},
+       2},
   };
   for (const auto& c : cases) {
     const RunResult r = runLensrt(c.args);
