@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "app/lens_loading.h"
 #include "camera/lens_camera.h"
 #include "camera/pinhole_camera.h"
 #include "camera/thick_lens_camera.h"
@@ -168,29 +169,50 @@ FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {
   return f;
 }
 
+namespace {
+std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gltf, const FilmGeometry& film,
+                                    const std::optional<LensPrescription>& lens, Warnings& warnings,
+                                    const HitDistance& hitDistance);
+}  // namespace
+
 std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& gltf, FilmGeometry rasterFilm,
                                    const HitDistance& hitDistance, Warnings& warnings) {
   const FilmGeometry film = cameraFilm(o, rasterFilm.width, rasterFilm.height);
-  const Transform& worldFromCamera = gltf.worldFromCamera;
   if (gltf.orthographic)
     warnings.warn("camera '" + gltf.name + "' is orthographic; rendering it in perspective");
 
-  // Exposure.
+  if (o.exposure != "physical" && (!o.shutter.empty() || o.iso))
+    warnings.warn("--shutter and --iso only apply with --exposure physical; ignored");
+
+  // The lens, scaled to --focal-length when both are given.
+  std::optional<UserLens> user;
+  std::optional<LensPrescription> lens;
+  if (!o.lens.empty()) {
+    user = loadUserLens(o.lens, o.lensDir);
+    requireRealImage(*user);
+    if (o.focalLengthMm)
+      user->prescription =
+          user->prescription.scaled(*o.focalLengthMm / computeParaxial(user->prescription).efl);
+    lens = user->prescription;
+  } else if (o.model == "thick" || o.model == "lens") {
+    throw CLI::ValidationError("--lens", "--camera " + o.model + " needs a lens, e.g. --lens dgauss-50mm");
+  }
+  // Everything below that the optics reject is about the lens: name it.
+  if (user)
+    return withLensErrors(*user, [&] { return buildCamera(o, gltf, film, lens, warnings, hitDistance); });
+  return buildCamera(o, gltf, film, lens, warnings, hitDistance);
+}
+
+namespace {
+
+std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gltf, const FilmGeometry& film,
+                                    const std::optional<LensPrescription>& lens, Warnings& warnings,
+                                    const HitDistance& hitDistance) {
+  const Transform& worldFromCamera = gltf.worldFromCamera;
   Exposure exposure;
   exposure.mode = o.exposure == "physical" ? ExposureMode::Physical : ExposureMode::Normalized;
   if (!o.shutter.empty()) exposure.shutterSeconds = parseShutter(o.shutter);
   if (o.iso) exposure.iso = *o.iso;
-  if (exposure.mode == ExposureMode::Normalized && (!o.shutter.empty() || o.iso))
-    warnings.warn("--shutter and --iso only apply with --exposure physical; ignored");
-
-  // The lens, scaled to --focal-length when both are given.
-  std::optional<LensPrescription> lens;
-  if (!o.lens.empty()) {
-    lens = loadLens(findLens(o.lens, o.lensDir));
-    if (o.focalLengthMm) *lens = lens->scaled(*o.focalLengthMm / computeParaxial(*lens).efl);
-  } else if (o.model == "thick" || o.model == "lens") {
-    throw CLI::ValidationError("--lens", "--camera " + o.model + " needs a lens, e.g. --lens dgauss-50mm");
-  }
   const std::optional<ParaxialData> paraxial = lens ? std::optional(computeParaxial(*lens)) : std::nullopt;
   const double fNumber = o.fNumber ? *o.fNumber : paraxial ? paraxial->fNumber : 2.8;
   const ApertureShape aperture{o.blades, o.bladeRotationDegrees};
@@ -202,6 +224,16 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& glt
                                            : 0.5 * film.sensorHeightMm / std::tan(0.5 * yfovGltf);
   const double yfovInfinity =
       paraxial || o.focalLengthMm ? 2.0 * std::atan(0.5 * film.sensorHeightMm / focalMm) : yfovGltf;
+
+  // The closest focus: a thin lens needs the object beyond its focal length;
+  // a lens (and the thick model of it) beyond its front focal point and its
+  // front surface, measured from the entrance pupil.
+  const double closestMm = o.model == "thin" ? focalMm
+                           : lens            ? closestFocusDistanceMm(LensSystem(*lens))
+                                             : focalMm;
+  const std::string optic = o.model == "thin" ? fmt::format("the thin lens (f = {:.4g} mm)", focalMm)
+                            : lens            ? lens->name
+                                              : "the lens";
 
   // Focus: what the chosen pixel sees, measured along the axis.
   std::optional<double> focus = parseFocus(o.focus);
@@ -233,8 +265,7 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& glt
       focus = kInfinity;
     }
     // Too close for the optics: focus as close as they can.
-    const double closestM =
-        lens ? 1.001 * closestFocusDistanceMm(LensSystem(*lens)) / 1000.0 : 1.001 * focalMm / 1000.0;
+    const double closestM = 1.001 * closestMm / 1000.0;
     if (*focus < closestM) {
       warnings.warn(
           fmt::format("--focus auto: the surface at {:.4g} m is closer than the lens focuses; using {:.4g} m",
@@ -243,45 +274,44 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& glt
     }
   }
   const double focusM = focus.value_or(kInfinity);
-  if (lens && !std::isinf(focusM) && focusM * 1000.0 <= closestFocusDistanceMm(LensSystem(*lens)))
+  if (needsFocus && !std::isinf(focusM) && focusM * 1000.0 <= closestMm)
     throw CLI::ValidationError(
-        "--focus", fmt::format("{} cannot focus at {:g} m (closest: {:.4g} m)", lens->name, focusM,
-                               closestFocusDistanceMm(LensSystem(*lens)) / 1000.0));
+        "--focus", fmt::format("{} cannot focus at {:g} m (it needs more than {:.4g} m)", optic, focusM,
+                               closestMm / 1000.0));
 
+  // What the camera models still reject is about the lens (makeCamera names
+  // it) or the glTF camera (RenderJob names the scene).
   const std::string lensName = lens ? lens->name : "";
-  try {
-    if (o.model == "pinhole") {
-      const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
-      return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
-    }
-    if (o.model == "thin") {
-      ThinLensParams p;
-      p.focalLengthMm = focalMm;
-      p.fNumber = fNumber;
-      p.focusMetres = focusM;
-      p.aperture = aperture;
-      p.lensName = lensName;
-      return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
-    }
-    if (o.model == "thick") {
-      if (o.fNumber && *o.fNumber < paraxial->fNumber * (1 - 1e-9))
-        warnings.warn(
-            fmt::format("{}: f/{:g} is wider than the lens allows; the thick lens opens to it anyway",
-                        lensName, *o.fNumber));
-      ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
-      p.aperture = aperture;
-      p.lensName = lensName;
-      return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
-    }
-    LensCameraParams p;
+  if (o.model == "pinhole") {
+    const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
+    return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
+  }
+  if (o.model == "thin") {
+    ThinLensParams p;
+    p.focalLengthMm = focalMm;
     p.fNumber = fNumber;
     p.focusMetres = focusM;
     p.aperture = aperture;
-    return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
-  } catch (const std::invalid_argument& e) {
-    throw CLI::ValidationError("--focus", e.what());
+    p.lensName = lensName;
+    return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
   }
+  if (o.model == "thick") {
+    if (o.fNumber && *o.fNumber < paraxial->fNumber * (1 - 1e-9))
+      warnings.warn(fmt::format("{}: f/{:g} is wider than the lens allows; the thick lens opens to it anyway",
+                                lensName, *o.fNumber));
+    ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
+    p.aperture = aperture;
+    p.lensName = lensName;
+    return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
+  }
+  LensCameraParams p;
+  p.fNumber = fNumber;
+  p.focusMetres = focusM;
+  p.aperture = aperture;
+  return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
 }
+
+}  // namespace
 
 ImageMetadata cameraMetadata(const Camera& camera) {
   const CameraInfo i = camera.info();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/lens_loading.h"
 #include "app/lens_subcommands.h"
 #include "core/constants.h"
 #include "core/warnings.h"
@@ -71,6 +72,9 @@ std::string metresText(double mm) {
   return std::isfinite(mm) ? fmt::format("{:.4g} m", mm / 1000.0) : "infinity";
 }
 
+int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor& sensor, double focusM,
+              Warnings& warnings, const std::vector<std::string>& warningList);
+
 int runInfo(const InfoOptions& o) {
   const Sensor sensor = parseSensor(o.sensor);
   const double focusM = parseFocusMetres(o.focus);
@@ -83,7 +87,14 @@ int runInfo(const InfoOptions& o) {
     warningList.push_back(w);
     fmt::print(stderr, "lensrt: warning: {}\n", w);
   });
-  const LensPrescription design = loadLens(findLens(o.lens, LENSRT_LENS_DIR));
+  const UserLens user = loadUserLens(o.lens, LENSRT_LENS_DIR);
+  requireRealImage(user);
+  return withLensErrors(
+      user, [&] { return printInfo(o, user.prescription, sensor, focusM, warnings, warningList); });
+}
+
+int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor& sensor, double focusM,
+              Warnings& warnings, const std::vector<std::string>& warningList) {
   const double widest = computeParaxial(design).fNumber;
   const LensSystem lens(o.fNumber ? stopDown(design, *o.fNumber, warnings) : design);
   const ParaxialData& p = lens.paraxial();

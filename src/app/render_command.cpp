@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "app/camera_options.h"
 #include "app/command.h"
@@ -70,13 +72,25 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
     throw InputError(envFile, "environment map not found");
 
-  Warnings warnings([&](const std::string& message) {
+  // Warnings wait until the scene and camera are set up, so that a run that
+  // fails there prints its one error line alone.
+  std::vector<std::string> held;
+  bool holding = true;
+  const auto print = [&](const std::string& message) {
     if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
+  };
+  Warnings warnings([&](const std::string& message) {
+    if (holding)
+      held.push_back(message);
+    else
+      print(message);
   });
 
   // 2. Scene, lights, camera, render.
   const RenderJob job(sceneOptions, warnings);
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
+  holding = false;
+  for (const std::string& message : held) print(message);
   const RenderJobResult result = job.render(*camera, settings, args.quiet);
 
   // 3. Write.

@@ -151,3 +151,33 @@ with open(os.path.join(HERE, "glb-version-1.glb"), "wb") as f:
     f.write(g[:4] + struct.pack("<I", 1) + g[8:])
 with open(os.path.join(HERE, "empty.gltf"), "w") as f:
     pass
+
+
+def glb_with_bin(doc, payload, declared_bin_length):
+    """A .glb whose BIN chunk header declares `declared_bin_length` bytes."""
+    body = json.dumps(doc).encode()
+    body += b" " * (-len(body) % 4)
+    payload += b"\0" * (-len(payload) % 4)
+    total = 12 + 8 + len(body) + 8 + len(payload)
+    return (struct.pack("<4sII", b"glTF", 2, total) + struct.pack("<I4s", len(body), b"JSON") + body +
+            struct.pack("<I4s", declared_bin_length, b"BIN\0") + payload)
+
+
+d = copy.deepcopy(good)
+payload = base64.b64decode(d["buffers"][0]["uri"].split(",")[1])
+d["buffers"][0] = {"byteLength": len(payload) + 8}
+with open(os.path.join(HERE, "glb-bin-chunk-overrun.glb"), "wb") as f:
+    # The BIN chunk claims 8 bytes more than the file holds (tinygltf 2.7 accepts this).
+    f.write(glb_with_bin(d, payload, len(payload) + (-len(payload) % 4) + 8))
+
+d = copy.deepcopy(good)
+d["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}]
+d["nodes"].append({"name": "far", "camera": 0, "translation": [0, 0, 1e20]})
+d["scenes"][0]["nodes"].append(1)
+write("camera-far-away.gltf", d)
+
+d = copy.deepcopy(good)
+d["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.001}}]
+d["nodes"].append({"name": "close", "camera": 0, "translation": [0.2, 0.2, 0.01]})
+d["scenes"][0]["nodes"].append(1)
+write("camera-touching-surface.gltf", d)
