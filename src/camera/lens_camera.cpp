@@ -1,5 +1,7 @@
 #include "camera/lens_camera.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -61,38 +63,69 @@ double irradianceIntegrand(const Vec3d& filmPoint, const Vec3d& pupilPoint) {
 
 }  // namespace
 
+std::optional<LensRay> LensCamera::traceLens(const LensRay& in, double wavelengthNm) const {
+  if (!polygon_) return lens_->traceFromFilm(in, wavelengthNm);
+  std::vector<Vec3d> path;
+  path.reserve(lens_->surfaceCount());
+  std::optional<LensRay> out = lens_->traceFromFilm(in, wavelengthNm, &path);
+  // The path runs from the rear surface to the front one.
+  if (out) {
+    const Vec3d& hit = path.at(lens_->surfaceCount() - 1 - lens_->paraxial().stopIndex);
+    if (!polygon_->contains({hit.x, hit.y})) out.reset();
+  }
+  return out;
+}
+
 std::optional<Ray> LensCamera::traceThrough(const Vec2f& raster, const Vec2d& pupilPoint,
                                             double wavelengthNm) const {
   const Vec2d up = uprightSensorPointMm(film(), raster);
   const Vec3d p{-up.x, -up.y, filmZ_};  // the inverted real image
-  const LensRay in{p, Vec3d{pupilPoint.x, pupilPoint.y, bounds_->planeZ()} - p};
-  std::optional<LensRay> out;
-  if (polygon_) {
-    std::vector<Vec3d> path;
-    path.reserve(lens_->surfaceCount());
-    out = lens_->traceFromFilm(in, wavelengthNm, &path);
-    // The path runs from the rear surface to the front one.
-    if (out) {
-      const Vec3d& hit = path.at(lens_->surfaceCount() - 1 - lens_->paraxial().stopIndex);
-      if (!polygon_->contains({hit.x, hit.y})) out.reset();
-    }
-  } else {
-    out = lens_->traceFromFilm(in, wavelengthNm);
-  }
+  const std::optional<CameraRay> r =
+      cameraRay(traceLens({p, Vec3d{pupilPoint.x, pupilPoint.y, bounds_->planeZ()} - p}, wavelengthNm), 1.0);
+  if (!r) return std::nullopt;
+  return r->ray;
+}
+
+LensCamera::PupilRay LensCamera::pupilRay(const CameraSample& s) const {
+  const Vec2d up = uprightSensorPointMm(film(), s.film);
+  const Vec3d p{-up.x, -up.y, filmZ_};  // the inverted real image
+  const std::optional<PupilSample> ps = bounds_->sample({p.x, p.y}, {s.lens.x, s.lens.y});
+  if (!ps) return {{p, Vec3d{}}, 0.0};
+  return {{p, ps->point - p}, scale_ * irradianceIntegrand(p, ps->point) / ps->pdf};
+}
+
+// Lens space (mm, from the front vertex) to camera space (metres, from the entrance pupil).
+std::optional<CameraRay> LensCamera::cameraRay(const std::optional<LensRay>& out, double weight) const {
   if (!out) return std::nullopt;
   const Vec3d o = Vec3d{out->origin.x, out->origin.y, out->origin.z - entrancePupilZ_} * 1e-3;
-  return Ray{Vec3f(o), Vec3f(out->direction)};
+  return CameraRay{Ray{Vec3f(o), Vec3f(out->direction)}, float(weight)};
 }
 
 std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& s) const {
-  const Vec2d up = uprightSensorPointMm(film(), s.film);
-  const Vec3d p{-up.x, -up.y, filmZ_};
-  const std::optional<PupilSample> ps = bounds_->sample({p.x, p.y}, {s.lens.x, s.lens.y});
-  if (!ps) return std::nullopt;
+  const PupilRay pr = pupilRay(s);
+  if (pr.weight == 0.0) return std::nullopt;
   const double wavelength = params_.dispersion ? double(s.wavelengthNm) : kWavelengthDNm;
-  const std::optional<Ray> ray = traceThrough(s.film, {ps->point.x, ps->point.y}, wavelength);
-  if (!ray) return std::nullopt;
-  return CameraRay{*ray, float(scale_ * irradianceIntegrand(p, ps->point) / ps->pdf)};
+  return cameraRay(traceLens(pr.ray, wavelength), pr.weight);
+}
+
+void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
+                                         std::span<std::optional<CameraRay>> out) const {
+  if (polygon_ || params_.dispersion) return Camera::generateCameraSpaceRays(samples, out);
+  // In chunks on the stack: the lens traces a chunk's rays together.
+  constexpr std::size_t kChunk = 4 * LensSystem::kTraceLanes;
+  std::array<LensRay, kChunk> rays;
+  std::array<double, kChunk> weights;
+  std::array<std::optional<LensRay>, kChunk> traced;
+  for (std::size_t first = 0; first < samples.size(); first += kChunk) {
+    const std::size_t n = std::min(kChunk, samples.size() - first);
+    for (std::size_t i = 0; i < n; ++i) {
+      const PupilRay pr = pupilRay(samples[first + i]);
+      rays[i] = pr.ray;  // a zero direction fails the trace: blocked
+      weights[i] = pr.weight;
+    }
+    lens_->traceFromFilm(std::span(rays).first(n), std::span(traced).first(n));
+    for (std::size_t i = 0; i < n; ++i) out[first + i] = cameraRay(traced[i], weights[i]);
+  }
 }
 
 }  // namespace lensrt

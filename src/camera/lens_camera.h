@@ -55,8 +55,21 @@ class LensCamera final : public Camera {
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
+  void generateCameraSpaceRays(std::span<const CameraSample> samples,
+                               std::span<std::optional<CameraRay>> out) const override;
 
  private:
+  // The film point of a sample (lens space) and the ray toward its pupil
+  // sample; a zero direction when the film point has no pupil (blocked).
+  struct PupilRay {
+    LensRay ray;
+    double weight = 0.0;  // the irradiance integrand over the pdf, times the exposure scale
+  };
+  PupilRay pupilRay(const CameraSample& sample) const;
+  // The exact trace, then the polygonal aperture when blades are set.
+  std::optional<LensRay> traceLens(const LensRay& in, double wavelengthNm) const;
+  std::optional<CameraRay> cameraRay(const std::optional<LensRay>& out, double weight) const;
+
   LensCameraParams params_;
   Exposure exposure_;
   std::unique_ptr<LensSystem> lens_;

@@ -1,7 +1,9 @@
 #include "optics/lens_system.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
 
 namespace lensrt {
 
@@ -49,17 +51,83 @@ LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(
   }
 }
 
-// One loop for both directions, everything inline. The trace is a chain of
-// dependent square roots and divisions, so the loop keeps them off each
+// One surface of the trace, everything inline. The trace is a chain of
+// dependent square roots and divisions, so the step keeps them off each
 // other's path: the refraction angle comes from the intersection's
 // discriminant (cos i = sqrt(disc) / |R|), so its square root runs alongside
 // the intersection's, and the roots -b -+ sqrt(disc) need no division (their
 // absolute error, ~1e-16 |b| mm, is far below any optical tolerance).
+// eta: the index ratio, or 0 when the surface does not bend the ray. False
+// when the ray is blocked.
+template <bool kFromFilm>
+inline bool LensSystem::step(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d,
+                             std::vector<Vec3d>* path) {
+  // Work relative to the vertex: a sphere through the vertex is
+  // x^2 + y^2 + z^2 - 2 R z = 0, which avoids cancellation for large R.
+  const Vec3d p{o.x, o.y, o.z - s.z};
+  if (s.radius == 0.0) {
+    if (d.z == 0.0) return false;
+    const double t = -p.z / d.z;
+    if (!(t >= -1e-9)) return false;
+    const Vec3d hit = p + d * t;
+    if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return false;
+    o = {hit.x, hit.y, hit.z + s.z};
+    if (path) path->push_back(o);
+    if (eta == 0.0) return true;
+    if (!refractEta(d, {0.0, 0.0, d.z > 0.0 ? -1.0 : 1.0}, eta, d)) return false;
+  } else {
+    const double R = s.radius;
+    // With c = p.(p - 2C) and b = (p - C).d for the centre C = (0, 0, R),
+    // the hits are at t = -b -+ sqrt(b^2 - c) (d is unit).
+    const double zc = p.z - R;
+    const double b = p.x * d.x + p.y * d.y + zc * d.z;
+    const double c = p.x * p.x + p.y * p.y + p.z * (p.z - 2.0 * R);
+    const double disc = b * b - c;
+    if (!(disc >= 0.0)) return false;
+    const double root = std::sqrt(disc);
+    // The first crossing of the cap around the vertex (not the far
+    // hemisphere), and the sign that turns (hit - C) / R into the unit
+    // normal facing the ray: + on the nearer root, - on the farther.
+    double t = -b - root, normalScale = s.absInvRadius;
+    if (!(t >= -1e-9 && (zc + d.z * t) * R < 0.0)) {
+      t = -b + root, normalScale = -s.absInvRadius;
+      if (!(t >= -1e-9 && (zc + d.z * t) * R < 0.0)) return false;
+    }
+    const Vec3d hit = p + d * t;
+    if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return false;
+    o = {hit.x, hit.y, hit.z + s.z};
+    if (path) path->push_back(o);
+    if (eta == 0.0) return true;
+    // Snell's law with cos i = |(hit - C).d| / |R| = sqrt(disc) / |R|.
+    const double cos2I = std::min(1.0, disc * s.invRadius2);
+    const double sin2T = eta * eta * (1.0 - cos2I);
+    if (sin2T >= 1.0) return false;  // total internal reflection
+    const double cosI = root * s.absInvRadius;
+    const double cosT = std::sqrt(1.0 - sin2T);
+    d = d * eta + Vec3d{hit.x, hit.y, hit.z - R} * (normalScale * (eta * cosI - cosT));
+  }
+  return kFromFilm ? d.z < 0.0 : d.z > 0.0;  // false: turned back
+}
+
+namespace {
+
+template <bool kFromFilm>
+bool validInput(const LensRay& ray) {
+  return isFinite(ray.origin) && isFinite(ray.direction) &&
+         (kFromFilm ? ray.direction.z < 0.0 : ray.direction.z > 0.0);
+}
+
+std::optional<LensRay> finished(const Vec3d& o, const Vec3d& d) {
+  if (!isFinite(o) || !isFinite(d)) return std::nullopt;
+  return LensRay{o, normalize(d)};
+}
+
+}  // namespace
+
 template <bool kFromFilm>
 std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm,
                                          std::vector<Vec3d>* path) const {
-  const auto forward = [](double dz) { return kFromFilm ? dz < 0.0 : dz > 0.0; };
-  if (!isFinite(ray.origin) || !isFinite(ray.direction) || !forward(ray.direction.z)) return std::nullopt;
+  if (!validInput<kFromFilm>(ray)) return std::nullopt;
   const bool dLine = wavelengthNm == kWavelengthDNm;
   const int count = surfaceCount();
   const TraceSurface* const surfaces = surfaces_.data();
@@ -70,7 +138,6 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
   for (int k = 0; k < count; ++k) {
     const int i = kFromFilm ? count - 1 - k : k;
     const TraceSurface& s = surfaces[i];
-    // The index ratio, or 0 when the surface does not bend the ray.
     double eta = 0.0;
     if (dLine) {
       if (s.refracts) eta = kFromFilm ? s.etaFromFilm : s.etaFromScene;
@@ -80,54 +147,35 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
           kFromFilm ? (i > 0 ? surfaces[i - 1].after.index(wavelengthNm) : 1.0) : s.after.index(wavelengthNm);
       if (!s.isStop && n1 != nFrom) eta = n1 / nFrom;
     }
-    // Work relative to the vertex: a sphere through the vertex is
-    // x^2 + y^2 + z^2 - 2 R z = 0, which avoids cancellation for large R.
-    const Vec3d p{o.x, o.y, o.z - s.z};
-    if (s.radius == 0.0) {
-      if (d.z == 0.0) return std::nullopt;
-      const double t = -p.z / d.z;
-      if (!(t >= -1e-9)) return std::nullopt;
-      const Vec3d hit = p + d * t;
-      if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return std::nullopt;
-      o = {hit.x, hit.y, hit.z + s.z};
-      if (path) path->push_back(o);
-      if (eta == 0.0) continue;
-      if (!refractEta(d, {0.0, 0.0, d.z > 0.0 ? -1.0 : 1.0}, eta, d)) return std::nullopt;
-    } else {
-      const double R = s.radius;
-      // With c = p.(p - 2C) and b = (p - C).d for the centre C = (0, 0, R),
-      // the hits are at t = -b -+ sqrt(b^2 - c) (d is unit).
-      const double zc = p.z - R;
-      const double b = p.x * d.x + p.y * d.y + zc * d.z;
-      const double c = p.x * p.x + p.y * p.y + p.z * (p.z - 2.0 * R);
-      const double disc = b * b - c;
-      if (!(disc >= 0.0)) return std::nullopt;
-      const double root = std::sqrt(disc);
-      // The first crossing of the cap around the vertex (not the far
-      // hemisphere), and the sign that turns (hit - C) / R into the unit
-      // normal facing the ray: + on the nearer root, - on the farther.
-      double t = -b - root, normalScale = s.absInvRadius;
-      if (!(t >= -1e-9 && (zc + d.z * t) * R < 0.0)) {
-        t = -b + root, normalScale = -s.absInvRadius;
-        if (!(t >= -1e-9 && (zc + d.z * t) * R < 0.0)) return std::nullopt;
-      }
-      const Vec3d hit = p + d * t;
-      if (hit.x * hit.x + hit.y * hit.y > s.apertureRadius2) return std::nullopt;
-      o = {hit.x, hit.y, hit.z + s.z};
-      if (path) path->push_back(o);
-      if (eta == 0.0) continue;
-      // Snell's law with cos i = |(hit - C).d| / |R| = sqrt(disc) / |R|.
-      const double cos2I = std::min(1.0, disc * s.invRadius2);
-      const double sin2T = eta * eta * (1.0 - cos2I);
-      if (sin2T >= 1.0) return std::nullopt;  // total internal reflection
-      const double cosI = root * s.absInvRadius;
-      const double cosT = std::sqrt(1.0 - sin2T);
-      d = d * eta + Vec3d{hit.x, hit.y, hit.z - R} * (normalScale * (eta * cosI - cosT));
-    }
-    if (!forward(d.z)) return std::nullopt;  // turned back
+    if (!step<kFromFilm>(s, eta, o, d, path)) return std::nullopt;
   }
-  if (!isFinite(o) || !isFinite(d)) return std::nullopt;
-  return LensRay{o, normalize(d)};
+  return finished(o, d);
+}
+
+void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const {
+  if (out.size() != rays.size()) throw std::invalid_argument("traceFromFilm: as many outputs as rays");
+  const int count = surfaceCount();
+  const TraceSurface* const surfaces = surfaces_.data();
+  for (std::size_t first = 0; first < rays.size(); first += kTraceLanes) {
+    const std::size_t lanes = std::min(kTraceLanes, rays.size() - first);
+    std::array<Vec3d, kTraceLanes> o, d;
+    std::array<bool, kTraceLanes> alive{};
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const LensRay& r = rays[first + l];
+      alive[l] = validInput<true>(r);
+      o[l] = r.origin;
+      d[l] = alive[l] ? normalize(r.direction) : Vec3d{};
+    }
+    // Surface by surface, every lane: the lanes' dependency chains are
+    // independent, so the CPU overlaps them.
+    for (int i = count - 1; i >= 0; --i) {
+      const TraceSurface& s = surfaces[i];
+      const double eta = s.refracts ? s.etaFromFilm : 0.0;
+      for (std::size_t l = 0; l < lanes; ++l)
+        if (alive[l]) alive[l] = step<true>(s, eta, o[l], d[l], nullptr);
+    }
+    for (std::size_t l = 0; l < lanes; ++l) out[first + l] = alive[l] ? finished(o[l], d[l]) : std::nullopt;
+  }
 }
 
 std::optional<LensRay> LensSystem::traceFromFilm(const LensRay& ray, double wavelengthNm,

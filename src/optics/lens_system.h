@@ -8,7 +8,9 @@
 // scene: the real image on the film is inverted (a camera flips it).
 #pragma once
 
+#include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "core/vec.h"
@@ -44,6 +46,12 @@ class LensSystem {
                                        std::vector<Vec3d>* path = nullptr) const;
   // A ray from the scene toward the lens (direction.z > 0); returns the ray
   // leaving the rear surface toward the film.
+  // Many rays from the film at the d line: the same as traceFromFilm on each,
+  // bit for bit, but several at a time (kTraceLanes), whose independent
+  // square-root chains the CPU overlaps: about twice the throughput.
+  void traceFromFilm(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const;
+  static constexpr std::size_t kTraceLanes = 8;
+
   std::optional<LensRay> traceFromScene(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
                                         std::vector<Vec3d>* path = nullptr) const;
 
@@ -68,6 +76,8 @@ class LensSystem {
     double ndAfter = 1.0;  // index after the surface (toward the film) at the d line
     Dispersion after;
   };
+  template <bool kFromFilm>
+  static bool step(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d, std::vector<Vec3d>* path);
   template <bool kFromFilm>
   std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path) const;
 

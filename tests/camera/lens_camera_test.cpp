@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <vector>
 
 #include "camera/film_mapping.h"
@@ -215,6 +217,36 @@ TEST(LensCamera, BladesKeepTheExposureOfTheFNumber) {
 
 TEST(LensCamera, CannotFocusCloserThanTheLensAllows) {
   EXPECT_THROW(makeLens(4, 0.02), InputError);
+}
+
+// The renderer asks for rays in batches (generateRays, traced together):
+// the same rays and weights, bit for bit, as one sample at a time, with and
+// without blades.
+TEST(LensCamera, BatchedRaysEqualOneAtATime) {
+  for (const int blades : {0, 6}) {
+    ApertureShape shape;
+    shape.blades = blades;
+    const LensCamera cam = makeLens(2.8, 2.0, shape);
+    SplitMix64 rng(11);
+    std::vector<CameraSample> samples(100);
+    for (CameraSample& s : samples) {
+      s.film = {float(rng.uniform() * 640), float(rng.uniform() * 360)};
+      s.lens = {float(rng.uniform()), float(rng.uniform())};
+    }
+    std::vector<std::optional<CameraRay>> batched(samples.size());
+    cam.generateRays(samples, batched);
+    int passed = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const std::optional<CameraRay> one = cam.generateRay(samples[i]);
+      ASSERT_EQ(one.has_value(), batched[i].has_value()) << i;
+      if (!one) continue;
+      ++passed;
+      EXPECT_EQ(std::memcmp(&one->ray.origin, &batched[i]->ray.origin, sizeof(Vec3f)), 0) << i;
+      EXPECT_EQ(std::memcmp(&one->ray.direction, &batched[i]->ray.direction, sizeof(Vec3f)), 0) << i;
+      EXPECT_EQ(one->weight, batched[i]->weight) << i;
+    }
+    EXPECT_GT(passed, 60) << "blades " << blades;
+  }
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <optional>
+#include <vector>
 
 #include "core/constants.h"
 #include "core/error.h"
@@ -182,6 +185,36 @@ TEST(Tracing, NoNaNForAnyRay) {
   }
   EXPECT_GT(total, 1'000'000);
   EXPECT_GT(passed, total / 50);  // the test exercises real passes too
+}
+
+// The batched trace (several rays interleaved) is the one-ray trace, bit for
+// bit, whether rays pass or not and whatever the batch length.
+TEST(Tracing, BatchedFilmTraceEqualsOneRayAtATime) {
+  const LensSystem lens(test::libraryLens("dgauss-50mm"));
+  SplitMix64 rng(7);
+  std::vector<LensRay> rays;
+  for (int i = 0; i < 203; ++i) {  // not a multiple of the lane count
+    const auto within = [&](double half) { return (2 * rng.uniform() - 1) * half; };
+    const Vec3d film{within(20), within(20), lens.rearZ() + 40};
+    const Vec3d aim{within(15), within(15), lens.rearZ()};
+    rays.push_back({film, aim - film});
+  }
+  rays[5].direction = {0, 0, 0};  // invalid inputs fail alike
+  rays[6].direction = {0, 0, 1};
+  std::vector<std::optional<LensRay>> batched(rays.size());
+  lens.traceFromFilm(rays, batched);
+  int passed = 0;
+  const auto same = [](const Vec3d& a, const Vec3d& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const std::optional<LensRay> one = lens.traceFromFilm(rays[i]);
+    ASSERT_EQ(one.has_value(), batched[i].has_value()) << i;
+    if (!one) continue;
+    ++passed;
+    EXPECT_TRUE(same(one->origin, batched[i]->origin)) << i;
+    EXPECT_TRUE(same(one->direction, batched[i]->direction)) << i;
+  }
+  EXPECT_GT(passed, 20);
+  EXPECT_LT(passed, 200);  // some blocked too
 }
 
 }  // namespace
