@@ -146,8 +146,8 @@ double interpolate(const std::vector<std::pair<double, double>>& curve, double r
 // Under a uniform sky of radiance 1, the render through dgauss-50mm (f/2.8,
 // focused at 2 m, 36 x 24 mm) records E(r) / E(0) = the relative
 // illumination the lens plot computes from exact rays (cos^4, vignetting,
-// pupil aberration): at f/2.8 vignetting sets in near 12 mm and takes 66%
-// at the corner. The render's pixels are averaged in 1 mm rings, normalised
+// pupil aberration): at f/2.8 vignetting sets in near 12 mm and the corner
+// gets 34% of the centre. The render's pixels are averaged in 1 mm rings, normalised
 // by the centre (r < 3 mm), and compared with the plot's curve
 // interpolated at the same pixel centres. Tolerance: 4 sigma of the render's
 // noise (the variance AOV, propagated through the ring and the centre means)
@@ -155,7 +155,8 @@ double interpolate(const std::vector<std::pair<double, double>>& curve, double r
 // grid wobbles the curve by about 0.15% (it reads 1.0014 at 0.5 mm).
 TEST(LensRender, RelativeIlluminationUnderAUniformSkyMatchesTheLensPlot) {
   const double fNumber = 2.8, focusM = 2.0;
-  const auto curve = plottedRelativeIllumination({"--fstop", "2.8", "--focus", "2", "--sensor", "36x24"});
+  const auto curve = plottedRelativeIllumination(
+      {"--fstop", std::to_string(fNumber), "--focus", std::to_string(focusM), "--sensor", "36x24"});
   ASSERT_GE(curve.size(), 20u);
   const FilmGeometry film{96, 64, 36.0, 24.0};  // 0.375 mm pixels
   const LensCamera cam = dgauss50(film, fNumber, focusM);
