@@ -78,8 +78,8 @@ void checkOutputDirectory(const std::string& output) {
 
 void writeTextOutput(const std::string& output, const std::string& text) {
   if (output == "-") {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+      throw InputError("<stdout>", std::string("cannot write: ") + std::strerror(errno));
     return;
   }
   const std::filesystem::path file(output);
