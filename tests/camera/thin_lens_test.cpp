@@ -74,7 +74,9 @@ TEST(ThinLens, WeightIntegratesToSeedIrradiance) {
         const double e = area * std::pow(std::cos(theta), 4) / (q * q);  // E / L
         EXPECT_NEAR(sum / count, e / (kPi / (4 * n * n)), 0.01 * e / (kPi / (4 * n * n)))
             << "f/" << n << " focus " << focusM << " m, theta " << theta * 180 / kPi << " deg";
-        if (std::isinf(focusM)) EXPECT_NEAR(e, kPi * std::pow(std::cos(theta), 4) / (4 * n * n), 1e-12);
+        if (std::isinf(focusM)) {
+          EXPECT_NEAR(e, kPi * std::pow(std::cos(theta), 4) / (4 * n * n), 1e-12);
+        }
       }
     }
 }
