@@ -8,6 +8,7 @@
 #include <map>
 
 #include "app/lens_loading.h"
+#include "app/option_checks.h"
 #include "camera/lens_camera.h"
 #include "camera/pinhole_camera.h"
 #include "camera/thick_lens_camera.h"
@@ -114,7 +115,7 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "lens prescription: a .dat/.lens/.json file or a library name, e.g. --lens dgauss-50mm; the "
                  "thin, thick and pinhole models then derive from it");
   cmd.add_option("--fstop", o.fNumber, "f-number N, e.g. --fstop 2.8 (default: the lens wide open, else 2.8)")
-      ->check(CLI::Range(0.5, 1024.0));
+      ->check(numberIn(0.5, 1024.0, "the f-number"));
   cmd.add_option("--focus", o.focus,
                  "focus distance in metres from the entrance pupil, 'auto' (what the centre pixel, or "
                  "--focus-pixel, sees) or 'inf'; default auto")
@@ -128,20 +129,19 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
       ->check(checkWith(parseSensor, "WxH|NAME"));
   cmd.add_option("--blades", o.blades,
                  "aperture blades: 0 for a round aperture, else 3..64 (a regular polygon)")
-      ->check(CLI::Range(0, 64) & CLI::Validator(
-                                      [](std::string& s) -> std::string {
-                                        return s == "1" || s == "2"
-                                                   ? "an aperture needs 0 or at least 3 blades"
-                                                   : "";
-                                      },
-                                      ""));
+      ->check(integerIn(0, 64, "0 for a round aperture, else 3 or more") &
+              CLI::Validator(
+                  [](std::string& s) -> std::string {
+                    return s == "1" || s == "2" ? "an aperture needs 0 or at least 3 blades" : "";
+                  },
+                  ""));
   cmd.add_option("--blade-rotation", o.bladeRotationDegrees,
                  "rotation of the blade polygon in degrees, e.g. 15")
-      ->check(CLI::Range(-360.0, 360.0));
+      ->check(numberIn(-360.0, 360.0, "degrees"));
   cmd.add_option("--focal-length", o.focalLengthMm,
                  "focal length in mm: without --lens the thin lens's and pinhole's (default: from the glTF "
                  "camera's field of view); with --lens the design is scaled to it")
-      ->check(CLI::Range(0.1, 10000.0));
+      ->check(numberIn(0.1, 10000.0, "mm"));
   cmd.add_option("--exposure", o.exposure,
                  "normalized (an ideal lens records the scene radiance on axis at any f-number; default) or "
                  "physical (exposure H = E t, 1.0 = ISO 12232 saturation: value = 683 E t ISO / 78)")
@@ -150,7 +150,7 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "shutter time in seconds for --exposure physical, e.g. 1/125 (default 1/100)")
       ->check(checkWith(parseShutter, "SECONDS"));
   cmd.add_option("--iso", o.iso, "ISO speed for --exposure physical (default 100)")
-      ->check(CLI::Range(1.0, 1e7));
+      ->check(numberIn(1.0, 1e7, "ISO speed"));
 }
 
 FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {

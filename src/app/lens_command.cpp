@@ -12,6 +12,7 @@
 
 #include "app/lens_loading.h"
 #include "app/lens_subcommands.h"
+#include "app/option_checks.h"
 #include "core/constants.h"
 #include "core/warnings.h"
 #include "optics/exit_pupil.h"
@@ -207,11 +208,13 @@ CommandAction addLensInfoCommand(CLI::App& lensApp, const CommandContext&) {
   info->add_option("lens", options->lens, "Lens file (.lens, .json, .dat) or library name, e.g. dgauss-50mm")
       ->required();
   info->add_option("--sensor", options->sensor, "Sensor size WIDTHxHEIGHT in mm")->capture_default_str();
-  info->add_option("--fstop", options->fNumber, "Stop down to this f-number (default: widest)");
+  info->add_option("--fstop", options->fNumber, "Stop down to this f-number (default: widest)")
+      ->check(aNumber("an f-number"));
   info->add_option("--focus", options->focus, "Focus distance in metres from the entrance pupil, or 'inf'")
       ->capture_default_str();
   info->add_option("--coc", options->circleOfConfusionMm,
-                   "Circle of confusion in mm (default: diagonal / 1500)");
+                   "Circle of confusion in mm (default: diagonal / 1500)")
+      ->check(aNumber("mm"));
   info->add_flag("--json", options->json, "Print JSON (distances in mm unless named _m)");
   return [options] { return runInfo(*options); };
 }

@@ -2,6 +2,7 @@
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <exception>
 #include <string>
 #include <utility>
@@ -21,6 +22,52 @@ std::string joinCommandLine(int argc, char** argv) {
     s += quote ? "'" + arg + "'" : arg;
   }
   return s;
+}
+
+// "lensrt render" for an error while parsing render's flags: the help that
+// lists them.
+std::string helpCommand(const CLI::App& app) {
+  std::string command = "lensrt";
+  const CLI::App* current = &app;
+  while (true) {
+    const auto parsed = current->get_subcommands([](const CLI::App* sub) { return sub->parsed(); });
+    if (parsed.empty()) return command;
+    current = parsed.front();
+    command += " " + current->get_name();
+  }
+}
+
+// CLI11 reports a mistyped command as "A subcommand is required"; name the
+// word and the commands there are. Empty when the command words are fine.
+std::string unknownCommand(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* current = &app;
+  std::string path = "lensrt";
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    // An option (whose value may follow) ends the command words.
+    if (word.empty() || word[0] == '-') break;
+    const auto subs = current->get_subcommands([](const CLI::App*) { return true; });
+    if (subs.empty()) break;
+    const auto it =
+        std::find_if(subs.begin(), subs.end(), [&](const CLI::App* s) { return s->check_name(word); });
+    if (it == subs.end()) {
+      std::string names;
+      for (std::size_t k = 0; k < subs.size(); ++k)
+        names += (k == 0 ? "" : k + 1 == subs.size() ? " or " : ", ") + subs[k]->get_name();
+      return fmt::format("unknown command '{}' for {}: use {} (see {} --help)", word, path, names, path);
+    }
+    current = *it;
+    path += " " + current->get_name();
+  }
+  const auto subs = current->get_subcommands([](const CLI::App*) { return true; });
+  if (current->get_require_subcommand_min() > 0 && !subs.empty() &&
+      std::none_of(subs.begin(), subs.end(), [](const CLI::App* s) { return s->parsed(); })) {
+    std::string names;
+    for (std::size_t k = 0; k < subs.size(); ++k)
+      names += (k == 0 ? "" : k + 1 == subs.size() ? " or " : ", ") + subs[k]->get_name();
+    return fmt::format("{} needs a command: {} (see {} --help)", path, names, path);
+  }
+  return "";
 }
 
 }  // namespace
@@ -54,7 +101,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "lensrt: error: {} (see lensrt --help)\n", e.what());
+    if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
+      fmt::print(stderr, "lensrt: error: {}\n", unknown);
+      return 2;
+    }
+    fmt::print(stderr, "lensrt: error: {} (see {} --help)\n", e.what(), helpCommand(app));
     return 2;
   }
 

@@ -1,19 +1,21 @@
 // `lensrt render SCENE -o OUT`: path-trace a glTF scene to an image.
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "app/camera_options.h"
 #include "app/command.h"
+#include "app/option_checks.h"
+#include "app/output_file.h"
 #include "app/render_job.h"
 #include "app/render_options.h"
 #include "core/error.h"
-#include "image/image_io.h"
 
 namespace lensrt {
 namespace {
@@ -35,22 +37,6 @@ struct RenderArgs {
   CameraOptions camera;
 };
 
-// Everything that can be checked without rendering is checked first, so that
-// a long render never ends in an error.
-void checkOutput(const std::filesystem::path& out) {
-  if (!isWritableImageExtension(out))
-    throw CLI::ValidationError("-o: unknown image extension '" + out.extension().string() +
-                               "' (use .exr for the full result, .png or .jpg for a preview)");
-  std::filesystem::path dir = out.parent_path();
-  if (dir.empty()) dir = ".";
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec))
-    throw InputError(out.string(), "the output directory " + dir.string() + " does not exist");
-  if (access(dir.c_str(), W_OK) != 0)
-    throw InputError(out.string(), "the output directory " + dir.string() + " is not writable");
-  if (std::filesystem::is_directory(out, ec)) throw InputError(out.string(), "is a directory");
-}
-
 int runRender(const RenderArgs& args, const CommandContext& context) {
   // 1. Options.
   SceneOptions sceneOptions;
@@ -67,7 +53,9 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   settings.threads = args.threads;
   settings.tileSize = args.tileSize;
   settings.aovs = parseAovs(args.aovs);
-  checkOutput(args.output);
+  // Everything that can be checked without rendering is checked first, so
+  // that a long render never ends in an error.
+  checkOutputFile(args.output);
   const std::string& envFile = sceneOptions.environment.file;
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
     throw InputError(envFile, "environment map not found");
@@ -94,7 +82,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   const RenderJobResult result = job.render(*camera, settings, args.quiet);
 
   // 3. Write.
-  writeImage(args.output, result.output.image, job.metadata(*camera, settings, result, context.commandLine));
+  writeOutputImage(args.output, result.output.image,
+                   job.metadata(*camera, settings, result, context.commandLine));
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
                args.scene, result.output.droppedSamples);
@@ -119,7 +108,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
                   "e.g. -o out/a.exr")
       ->required();
   cmd->add_option("--spp", args->spp, "samples per pixel (>= 1), e.g. --spp 64")
-      ->check(CLI::Range(1, 1 << 24))
+      ->check(integerIn(1, 1 << 24, "samples per pixel"))
       ->capture_default_str();
   cmd->add_option(
          "--res", args->resolution,
@@ -129,12 +118,13 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option(
          "--max-depth", args->maxDepth,
          "maximum scattering events per path (0: emitters only, 1: direct light), e.g. --max-depth 8")
-      ->check(CLI::Range(0, 1024))
+      ->check(integerIn(0, 1024, "scattering events per path"))
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "worker threads (0: all cores), e.g. --threads 4")
-      ->check(CLI::Range(0, 4096))
+      ->check(integerIn(0, 4096, "worker threads, 0 for all cores"))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "random seed; same seed, same image on any machine, e.g. --seed 7")
+      ->check(integerIn<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
       ->capture_default_str();
   cmd->add_option(
       "--camera-node", args->cameraNode,
@@ -143,7 +133,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option(
          "--scene-index", args->sceneIndex,
          "which glTF scene to render (0-based; default: the file's default scene), e.g. --scene-index 1")
-      ->check(CLI::Range(-1, 1 << 20));
+      ->check(integerIn(0, 1 << 20, "0-based"));
   cmd->add_option(
          "--env", args->environment,
          "environment light: constant:V or constant:R,G,B radiance in W/(sr m^2), or a lat-long .exr/.hdr "
@@ -156,7 +146,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
       ->delimiter(',')
       ->check(CLI::IsMember({"depth", "normal", "albedo", "variance"}));
   cmd->add_option("--tile", args->tileSize, "tile size in pixels for scheduling (does not change the image)")
-      ->check(CLI::Range(1, 4096))
+      ->check(integerIn(1, 4096, "pixels"))
       ->capture_default_str();
   addCameraOptions(*cmd, args->camera);
   cmd->add_flag("-q,--quiet", args->quiet, "no progress, warnings or summary on stderr (errors still print)");

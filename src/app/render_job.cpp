@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,10 +14,22 @@
 #include "render/progress.h"
 #include "scene/camera_selection.h"
 #include "scene/gltf_loader.h"
+#include "scene/selection_error.h"
 
 namespace lensrt {
 namespace {
 constexpr int kDefaultWidth = 640, kDefaultHeight = 360;
+
+// Asking for a camera or scene the file does not have is a wrong flag value
+// (exit 2), not a broken file.
+template <class F>
+auto asFlagError(const char* flag, F&& f) {
+  try {
+    return f();
+  } catch (const SelectionError& e) {
+    throw CLI::ValidationError(flag, e.file() + ": " + e.message());
+  }
+}
 }  // namespace
 
 Environment makeEnvironment(const EnvironmentSpec& spec) {
@@ -32,10 +45,12 @@ Environment makeEnvironment(const EnvironmentSpec& spec) {
 
 RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_(options) {
   const std::optional<Resolution>& res = options.resolution;
-  SceneDesc desc = loadGltf(options.scene, options.sceneIndex, warnings);
+  SceneDesc desc =
+      asFlagError("--scene-index", [&] { return loadGltf(options.scene, options.sceneIndex, warnings); });
   const float defaultAspect = float(kDefaultWidth) / float(kDefaultHeight);
   const float aspectGuess = res && res->height > 0 ? float(res->width) / float(res->height) : defaultAspect;
-  gltfCamera_ = selectCamera(desc, options.cameraNode, aspectGuess);
+  gltfCamera_ =
+      asFlagError("--camera-node", [&] { return selectCamera(desc, options.cameraNode, aspectGuess); });
   // Without --res (or with a width only) the height follows the glTF camera's
   // aspect ratio when it has one, else 16:9.
   width_ = res ? res->width : kDefaultWidth;
@@ -46,7 +61,9 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
     height_ = std::max(1, int(std::lround(float(width_) / aspect)));
   }
   if (!res || res->height == 0)
-    gltfCamera_ = selectCamera(desc, options.cameraNode, float(width_) / float(height_));
+    gltfCamera_ = asFlagError("--camera-node", [&] {
+      return selectCamera(desc, options.cameraNode, float(width_) / float(height_));
+    });
   environment_ = std::make_unique<Environment>(makeEnvironment(options.environment));
 
   scene_ = std::make_unique<RenderScene>(std::move(desc));

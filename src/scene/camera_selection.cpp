@@ -5,6 +5,7 @@
 
 #include "core/constants.h"
 #include "core/error.h"
+#include "scene/selection_error.h"
 
 namespace lensrt {
 namespace {
@@ -57,13 +58,14 @@ CameraDesc selectCamera(const SceneDesc& desc, const std::string& selector, floa
       return selector.size() < 10 && c.node == std::stoi(selector);
     });
     if (it != desc.cameras.end()) return *it;
-    throw InputError(desc.sourceFile, "node " + selector + " is not a camera node (" + available(desc) + ")");
+    throw SelectionError(desc.sourceFile,
+                         "node " + selector + " is not a camera node (" + available(desc) + ")");
   }
   for (const CameraDesc& c : desc.cameras)
     if (c.name == selector) return c;
   for (const CameraDesc& c : desc.cameras)
     if (c.cameraName == selector) return c;
-  throw InputError(desc.sourceFile, "no camera named '" + selector + "' (" + available(desc) + ")");
+  throw SelectionError(desc.sourceFile, "no camera named '" + selector + "' (" + available(desc) + ")");
 }
 
 }  // namespace lensrt

@@ -21,8 +21,8 @@ CameraDesc frameBounds(const Bounds3f& bounds, float aspect);
 //               frameBounds(desc.worldBounds(), aspect) (named "default view").
 // selector of digits only: the glTF node index of a camera node.
 // other text: a camera node's name, else a glTF camera object's name.
-// Throws InputError(desc.sourceFile, ...) listing the available cameras when
-// nothing matches.
+// Throws SelectionError(desc.sourceFile, ...) listing the available cameras
+// when nothing matches.
 CameraDesc selectCamera(const SceneDesc& desc, const std::string& selector, float aspect);
 
 }  // namespace lensrt

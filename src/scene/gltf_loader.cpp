@@ -18,6 +18,7 @@
 #include "scene/gltf_materials.h"
 #include "scene/gltf_mesh.h"
 #include "scene/gltf_values.h"
+#include "scene/selection_error.h"
 
 namespace lensrt {
 namespace {
@@ -345,8 +346,9 @@ class Traversal {
 std::vector<int> sceneRoots(const Context& ctx, int sceneIndex) {
   const auto& scenes = ctx.model.scenes;
   if (sceneIndex >= 0 && static_cast<std::size_t>(sceneIndex) >= scenes.size())
-    ctx.fail("scene index " + std::to_string(sceneIndex) + " out of range (the file has " +
-             std::to_string(scenes.size()) + " scene" + (scenes.size() == 1 ? "" : "s") + ")");
+    throw SelectionError(ctx.file, "scene index " + std::to_string(sceneIndex) +
+                                       " out of range (the file has " + std::to_string(scenes.size()) +
+                                       " scene" + (scenes.size() == 1 ? "" : "s") + ")");
   if (sceneIndex < 0) {
     if (ctx.model.defaultScene >= 0 && static_cast<std::size_t>(ctx.model.defaultScene) < scenes.size())
       sceneIndex = ctx.model.defaultScene;

@@ -21,7 +21,8 @@ namespace lensrt {
 // sceneIndex: -1 for the file's default scene (its "scene" property, else scene
 // 0), otherwise a 0-based index into the file's scenes. Throws InputError(file,
 // one-line message) for unreadable or broken input, and when the scene has no
-// non-degenerate triangle to render.
+// non-degenerate triangle to render; SelectionError (an InputError) when the
+// file has no scene `sceneIndex`.
 SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings);
 
 }  // namespace lensrt

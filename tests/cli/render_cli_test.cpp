@@ -4,14 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "core/constants.h"
-
-#include <cmath>
 #include <cstring>
 #include <limits>
 
 #include "cli/cli_util.h"
+#include "core/constants.h"
 #include "image/image_io.h"
 
 namespace lensrt {
@@ -137,8 +134,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"NegativeEnv", {"@good.gltf", "--env", "constant:-1"}, 2, {"--env"}},
         BadInput{"MissingEnvMap", {"@good.gltf", "--env", "@nowhere.exr"}, 1, {"nowhere.exr"}},
         BadInput{"UnknownAov", {"@good.gltf", "--aov", "depth,colour"}, 2, {"--aov"}},
-        BadInput{"UnknownCamera", {"@good.gltf", "--camera-node", "nosuchcam"}, 1, {"good.gltf"}},
-        BadInput{"SceneIndexOutOfRange", {"@good.gltf", "--scene-index", "5"}, 1, {"good.gltf"}}),
+        // Asking for what the file does not have is a wrong flag value: exit 2, naming flag and file.
+        BadInput{"UnknownCamera",
+                 {"@good.gltf", "--camera-node", "nosuchcam"},
+                 2,
+                 {"--camera-node", "good.gltf", "nosuchcam"}},
+        BadInput{
+            "SceneIndexOutOfRange", {"@good.gltf", "--scene-index", "5"}, 2, {"--scene-index", "good.gltf"}},
+        BadInput{"SppNotANumber", {"@good.gltf", "--spp", "abc"}, 2, {"--spp", "positive integer", "'abc'"}}),
     [](const auto& info) { return info.param.name; });
 
 TEST(RenderCli, UnwritableOutputIsRejectedBeforeRendering) {
@@ -175,7 +178,8 @@ TEST(RenderCli, LatLongEnvironmentMapLightsTheScene) {
         // The film records irradiance, so even the pinhole shows cos^4 falloff
         // (README, Camera models); the default view has a 40 degree yfov.
         const double t = std::tan(20.0 * kPi / 180.0);
-        const double tx = (2.0 * (x + 0.5) / img.width - 1.0) * t, ty = (2.0 * (y + 0.5) / img.height - 1.0) * t;
+        const double tx = (2.0 * (x + 0.5) / img.width - 1.0) * t,
+                     ty = (2.0 * (y + 0.5) / img.height - 1.0) * t;
         const double cos2 = 1.0 / (1.0 + tx * tx + ty * ty);
         EXPECT_NEAR(img.at(x, y, r), 2.0 * cos2 * cos2, 0.04 * 2.0 * cos2 * cos2) << x << "," << y;
         ++background;

@@ -80,13 +80,18 @@ bool isRoot() {
 // test must check to a witness directory outside the mount.
 //   $1 the directory to mount over, $2 the witness directory, $3 the precious file, then lensrt's argv.
 std::string mountScript(const std::string& setup) {
-  const std::string mount =
-      setup == "full-disk"
-          // A 64 KiB tmpfs holding the precious output and a filler using all the rest.
-          ? "mount -t tmpfs -o size=64k lensrt-full \"$1\" || exit 97; cp \"$3\" \"$1/out.exr\"; "
-            "dd if=/dev/zero of=\"$1/filler\" bs=4096 >/dev/null 2>&1; "
-          : "cp \"$3\" \"$1/out.exr\"; mount --bind \"$1\" \"$1\" && mount -o remount,bind,ro \"$1\" || exit "
-            "97; ";
+  // full-disk: a 64 KiB tmpfs holding the precious output and a filler using
+  // all the rest; nearly-full-disk: the same with 8 KiB left free (too little
+  // for the image, found only when writing it).
+  const std::string tmpfs =
+      "mount -t tmpfs -o size=64k lensrt-full \"$1\" || exit 97; cp \"$3\" \"$1/out.exr\"; ";
+  const std::string filler = "dd if=/dev/zero of=\"$1/filler\" bs=4096 >/dev/null 2>&1; ";
+  const std::string reserve = "dd if=/dev/zero of=\"$1/reserve\" bs=4096 count=2 >/dev/null 2>&1; ";
+  const std::string mount = setup == "full-disk" ? tmpfs + filler
+                            : setup == "nearly-full-disk"
+                                ? tmpfs + reserve + filler + "rm \"$1/reserve\"; "
+                                : "cp \"$3\" \"$1/out.exr\"; mount --bind \"$1\" \"$1\" && mount -o "
+                                  "remount,bind,ro \"$1\" || exit 97; ";
   return "d=$1 w=$2; " + mount +
          "touch \"$w/mounted\"; shift 3; \"$@\"; s=$?; cp \"$d/out.exr\" \"$w/out.exr\"; "
          "ls -A \"$d\" > \"$w/listing\"; exit $s";
@@ -114,7 +119,8 @@ TEST_P(BadInputs, OneClearLineRightStatusNoHangOutputUntouched) {
   const std::string setup = c.value("setup", "");
   fs::path target = tmp.path(), witness;
   if (!setup.empty()) {
-    target = tmp.path() / (setup == "full-disk" ? "full" : "ro");
+    const bool full = setup == "full-disk" || setup == "nearly-full-disk";
+    target = tmp.path() / (full ? "full" : "ro");
     witness = tmp.path() / "witness";
     fs::create_directories(target);
     fs::create_directories(witness);
@@ -138,7 +144,7 @@ TEST_P(BadInputs, OneClearLineRightStatusNoHangOutputUntouched) {
 
   const RunResult r = runWithTimeout(args, c.value("timeout", 120.0));
   ASSERT_FALSE(r.timedOut) << "hang: killed after the time limit";
-  if (!witness.empty() && !fs::exists(witness / "mounted") && (setup == "full-disk" || isRoot()))
+  if (!witness.empty() && !fs::exists(witness / "mounted") && (setup != "read-only-dir" || isRoot()))
     GTEST_SKIP() << "cannot mount here (" << setup << " needs a private mount namespace): " << r.err;
 
   EXPECT_EQ(r.status, c.at("status").get<int>()) << r.err;

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "gltf_test_builder.h"
 #include "scene/gltf_loader.h"
+#include "scene/selection_error.h"
 
 namespace lensrt {
 namespace {
@@ -68,13 +69,13 @@ TEST(CameraSelection, UnknownSelectorListsTheCameras) {
   try {
     selectCamera(d, "Top", 1.0f);
     FAIL();
-  } catch (const InputError& e) {
+  } catch (const SelectionError& e) {  // the request is wrong, not the file: a usage error
     EXPECT_EQ(e.message(), "no camera named 'Top' (cameras: 1 'Side', 3 'Main')");
   }
   try {
     selectCamera(d, "0", 1.0f);
     FAIL();
-  } catch (const InputError& e) {
+  } catch (const SelectionError& e) {
     EXPECT_EQ(e.message(), "node 0 is not a camera node (cameras: 1 'Side', 3 'Main')");
   }
 }

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "gltf_test_builder.h"
 #include "scene/gltf_loader.h"
+#include "scene/selection_error.h"
 
 namespace lensrt {
 namespace {
@@ -207,6 +208,10 @@ TEST(GltfErrors, CameraBeyondTheCoordinateLimit) {
 
 TEST(GltfErrors, SceneIndexOutOfRange) {
   EXPECT_EQ(errorOf(validSquare(), 3), "scene index 3 out of range (the file has 1 scene)");
+  // The request is wrong, not the file: the command line makes it a usage error.
+  Warnings w;
+  EXPECT_THROW(loadGltf(test::writeFile(test::testDir() / "one.gltf", validSquare().json()), 3, w),
+               SelectionError);
 }
 
 TEST(GltfErrors, UnsupportedRequiredExtension) {

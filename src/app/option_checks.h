@@ -1,0 +1,61 @@
+// CLI11 checks for numeric flags that say what the flag needs. CLI11's own
+// Range says "Value abc not in range 1 to 16777216" for a word, and a failed
+// conversion "Could not convert: --seed = x"; these run on the text first and
+// say e.g. "--spp: expected a positive integer up to 16777216 (samples per pixel), got 'abc'".
+// Header-only: test_camera compiles camera_options.cpp without the rest of the app.
+#pragma once
+
+#include <fmt/core.h>
+
+#include <CLI/CLI.hpp>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <system_error>
+
+namespace lensrt {
+
+// An integer in [lo, hi] written in decimal (no sign for unsigned types).
+template <class Int>
+CLI::Validator integerIn(Int lo, Int hi, const std::string& what = "") {
+  const std::string range = lo == 1 ? fmt::format("a positive integer up to {}", hi)
+                                    : fmt::format("an integer from {} to {}", lo, hi);
+  const std::string meaning = what.empty() ? "" : " (" + what + ")";
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        Int v{};
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc() && end == text.data() + text.size() && v >= lo && v <= hi) return "";
+        return "expected " + range + meaning + ", got '" + text + "'";
+      },
+      fmt::format("INT in [{} - {}]", lo, hi));
+}
+
+// A finite decimal number in [lo, hi].
+inline CLI::Validator numberIn(double lo, double hi, const std::string& what = "") {
+  const std::string meaning = what.empty() ? "" : " (" + what + ")";
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc() && end == text.data() + text.size() && std::isfinite(v) && v >= lo && v <= hi)
+          return "";
+        return fmt::format("expected a number from {:g} to {:g}{}, got '{}'", lo, hi, meaning, text);
+      },
+      fmt::format("NUMBER in [{:g} - {:g}]", lo, hi));
+}
+
+// Any finite decimal number; the command checks its range with its own words.
+inline CLI::Validator aNumber(const std::string& what) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc() && end == text.data() + text.size() && std::isfinite(v)) return "";
+        return "expected a number (" + what + "), got '" + text + "'";
+      },
+      "NUMBER");
+}
+
+}  // namespace lensrt
