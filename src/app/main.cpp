@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <exception>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -118,6 +119,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const lensrt::InputError& e) {
     fmt::print(stderr, "lensrt: error: {}\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "lensrt: error: out of memory (try a smaller --res or fewer --aov channels)\n");
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "lensrt: error: {}\n", e.what());

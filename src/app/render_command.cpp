@@ -1,5 +1,6 @@
 // `lensrt render SCENE -o OUT`: path-trace a glTF scene to an image.
 #include <fmt/core.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -36,6 +37,19 @@ struct RenderArgs {
   bool quiet = false;
   CameraOptions camera;
 };
+
+// The image is held in memory as floats (and copied once more to write it):
+// a --res this machine cannot hold is a usage error, not a crash mid-render.
+void checkImageFitsInMemory(int width, int height, std::size_t channels) {
+  const double bytes = 2.0 * double(width) * double(height) * double(channels) * sizeof(float);
+  const double physical = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
+  constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+  if (physical > 0 && bytes > physical)
+    throw CLI::ValidationError(
+        "--res", fmt::format("a {}x{} image with {} channels needs about {:.1f} GiB of memory, more than the "
+                             "{:.1f} GiB this machine has",
+                             width, height, channels, bytes / kGiB, physical / kGiB));
+}
 
 int runRender(const RenderArgs& args, const CommandContext& context) {
   // 1. Options.
@@ -76,6 +90,7 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
 
   // 2. Scene, lights, camera, render.
   const RenderJob job(sceneOptions, warnings);
+  checkImageFitsInMemory(job.width(), job.height(), filmChannels(settings.aovs).size());
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
   holding = false;
   for (const std::string& message : held) print(message);

@@ -84,6 +84,21 @@ void checkGlbLayout(const std::filesystem::path& file, const std::string& name, 
                                " follow it within the declared length");
 }
 
+// A .gltf is JSON: an object. Anything else (an image, a binary blob, a
+// renamed file) gets this line rather than nlohmann's "invalid literal".
+void checkLooksLikeJson(const std::filesystem::path& file, const std::string& name) {
+  std::ifstream in(file, std::ios::binary);
+  std::string head(64, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::size_t i = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // UTF-8 byte order mark
+  while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+  if (i < head.size() && head[i] != '{')
+    throw InputError(name,
+                     "not a glTF file: neither JSON (a .gltf starts with '{') nor binary glTF (a .glb "
+                     "starts with 'glTF')");
+}
+
 bool isGlb(const std::filesystem::path& file, const std::string& name, std::uint64_t fileSize) {
   std::ifstream in(file, std::ios::binary);
   std::array<unsigned char, 12> header{};
@@ -137,6 +152,7 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
   if (ec) throw InputError(name, "cannot read: " + ec.message());
   if (fileSize == 0) throw InputError(name, "file is empty");
   const bool binary = isGlb(file, name, fileSize);
+  if (!binary) checkLooksLikeJson(file, name);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(gltf::deferImageDecoding, nullptr);
   tinygltf::Model model;

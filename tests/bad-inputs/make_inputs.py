@@ -181,3 +181,6 @@ d["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.
 d["nodes"].append({"name": "close", "camera": 0, "translation": [0.2, 0.2, 0.01]})
 d["scenes"][0]["nodes"].append(1)
 write("camera-touching-surface.gltf", d)
+
+with open(os.path.join(HERE, "png-named-gltf.gltf"), "wb") as f:
+    f.write(base64.b64decode(PNG_2x1))  # an image renamed: not a glTF at all

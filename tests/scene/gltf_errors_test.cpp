@@ -126,6 +126,16 @@ TEST(GltfErrors, DegenerateTrianglesOnly) {
   EXPECT_EQ(errorOf(b), "nothing to render: all triangles are degenerate");
 }
 
+TEST(GltfErrors, NeitherJsonNorGlb) {
+  const std::string png = "\x89PNG\r\n\x1a\n rest of an image";
+  EXPECT_EQ(
+      errorOf(test::writeFile(test::testDir() / "image.gltf", png)),
+      "not a glTF file: neither JSON (a .gltf starts with '{') nor binary glTF (a .glb starts with 'glTF')");
+  // A byte order mark and white space before the JSON are fine.
+  EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "bom.gltf", "\xEF\xBB\xBF \n" + validSquare().json())),
+            "");
+}
+
 TEST(GltfErrors, GlbWithWrongHeader) {
   std::vector<std::uint8_t> bytes = validSquare().glb();
   bytes[0] = 'x';
