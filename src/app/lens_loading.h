@@ -27,6 +27,11 @@ struct UserLens {
 
 // Throws InputError(spec, ...) when no such file or library lens exists or it is invalid.
 inline UserLens loadUserLens(const std::string& spec, const std::filesystem::path& lensDir) {
+  // findLens would call a directory or a FIFO "no such lens".
+  std::error_code ec;
+  if (std::filesystem::exists(spec, ec) && !std::filesystem::is_regular_file(spec, ec))
+    throw InputError(spec, std::filesystem::is_directory(spec, ec) ? "is a directory, not a lens file"
+                                                                   : "not a regular file");
   UserLens lens{spec, loadLens(findLens(spec, lensDir))};
   return lens;
 }

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "scene/gltf_accessor.h"
@@ -84,6 +86,40 @@ void checkGlbLayout(const std::filesystem::path& file, const std::string& name, 
                                " follow it within the declared length");
 }
 
+// tinygltf's file access for buffer and image URIs, refusing what is not a
+// regular file: a FIFO blocked forever and a directory read as an absurd size
+// ("out of memory"; found trying buffer URIs of a FIFO and of /tmp).
+// tinygltf's own check opens the file, which blocks on a FIFO.
+bool fileExists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    if (err) *err += path + " is not a regular file\n";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!in || ec) {
+    if (err) *err += "cannot read " + path + "\n";
+    return false;
+  }
+  if (size == 0) {
+    if (err) *err += path + " is empty\n";
+    return false;
+  }
+  out->resize(static_cast<std::size_t>(size));
+  in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size));
+  if (static_cast<std::uintmax_t>(in.gcount()) != size) {
+    if (err) *err += "cannot read " + path + "\n";
+    return false;
+  }
+  return true;
+}
+
 // A .gltf is JSON: an object. Anything else (an image, a binary blob, a
 // renamed file) gets this line rather than nlohmann's "invalid literal".
 void checkLooksLikeJson(const std::filesystem::path& file, const std::string& name) {
@@ -155,6 +191,8 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
   if (!binary) checkLooksLikeJson(file, name);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(gltf::deferImageDecoding, nullptr);
+  loader.SetFsCallbacks(
+      {&fileExists, &tinygltf::ExpandFilePath, &readRegularFile, &tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string err, warn;
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)

@@ -184,3 +184,7 @@ write("camera-touching-surface.gltf", d)
 
 with open(os.path.join(HERE, "png-named-gltf.gltf"), "wb") as f:
     f.write(base64.b64decode(PNG_2x1))  # an image renamed: not a glTF at all
+
+d = copy.deepcopy(good)
+d["buffers"][0]["uri"] = "."  # this directory: used to read as an absurd size ("out of memory")
+write("buffer-uri-directory.gltf", d)

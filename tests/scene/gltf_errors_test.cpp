@@ -1,5 +1,6 @@
 // Bad input: one InputError with a one-line message naming the file, never a crash.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <random>
 
@@ -134,6 +135,22 @@ TEST(GltfErrors, NeitherJsonNorGlb) {
   // A byte order mark and white space before the JSON are fine.
   EXPECT_EQ(errorOf(test::writeFile(test::testDir() / "bom.gltf", "\xEF\xBB\xBF \n" + validSquare().json())),
             "");
+}
+
+// A buffer URI naming a FIFO blocked tinygltf forever (its existence check
+// opens the file) and one naming a directory read as an absurd size.
+TEST(GltfErrors, BufferUriThatIsNotARegularFile) {
+  const std::filesystem::path dir = test::testDir();
+  const std::filesystem::path fifo = dir / "buffer.fifo";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string uri : {"buffer.fifo", "."}) {
+    nlohmann::json doc = nlohmann::json::parse(validSquare().json());
+    doc["buffers"][0]["uri"] = uri;
+    const std::string message = errorOf(test::writeFile(dir / "uri.gltf", doc.dump()));
+    EXPECT_NE(message.find("is not a regular file"), std::string::npos) << message;
+  }
+  std::filesystem::remove(fifo);
 }
 
 TEST(GltfErrors, GlbWithWrongHeader) {
