@@ -121,7 +121,9 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "lensrt: error: {}\n", e.what());
     return 1;
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "lensrt: error: out of memory (try a smaller --res or fewer --aov channels)\n");
+    fmt::print(
+        stderr,
+        "lensrt: error: out of memory (the scene, its textures or the image at this --res do not fit)\n");
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "lensrt: error: {}\n", e.what());

@@ -71,8 +71,11 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   // that a long render never ends in an error.
   checkOutputFile(args.output);
   const std::string& envFile = sceneOptions.environment.file;
-  if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
+  std::error_code ec;
+  if (!envFile.empty() && !std::filesystem::exists(envFile, ec))
     throw InputError(envFile, "environment map not found");
+  if (!envFile.empty() && !std::filesystem::is_regular_file(envFile, ec))
+    throw InputError(envFile, "the environment map is not a regular file");
 
   // Warnings wait until the scene and camera are set up, so that a run that
   // fails there prints its one error line alone.
