@@ -98,23 +98,23 @@ bool fileExists(const std::string& path, void*) {
 bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    if (err) *err += path + " is not a regular file\n";
+    if (err) *err += "not a regular file\n";
     return false;
   }
   std::ifstream in(path, std::ios::binary);
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (!in || ec) {
-    if (err) *err += "cannot read " + path + "\n";
+    if (err) *err += "cannot read the file\n";
     return false;
   }
   if (size == 0) {
-    if (err) *err += path + " is empty\n";
+    if (err) *err += "file is empty\n";
     return false;
   }
   out->resize(static_cast<std::size_t>(size));
   in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size));
   if (static_cast<std::uintmax_t>(in.gcount()) != size) {
-    if (err) *err += "cannot read " + path + "\n";
+    if (err) *err += "cannot read the file\n";
     return false;
   }
   return true;
