@@ -1,7 +1,9 @@
 #include "scene/gltf_materials.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <utility>
@@ -10,6 +12,38 @@
 
 namespace lensrt::gltf {
 namespace {
+
+// Textures are held as 4 floats per texel: 128 Mtexels is 2 GiB, beyond any
+// real asset. A 1 MB PNG of zeros declaring 16000x16000 took 5 GB.
+constexpr int kMaxMegatexels = 128;
+constexpr double kMaxTexels = kMaxMegatexels * 1048576.0;
+
+std::uint32_t bigEndian32(const unsigned char* b) {
+  return (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | b[3];
+}
+
+// Width and height a PNG or JPEG header declares, read before decoding
+// allocates for them; nullopt for other formats or broken headers (the
+// decoder then reports those).
+std::optional<std::pair<std::uint32_t, std::uint32_t>> declaredSize(const unsigned char* b, std::size_t n) {
+  static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (n >= 24 && std::equal(kPng, kPng + 8, b)) return std::pair{bigEndian32(b + 16), bigEndian32(b + 20)};
+  if (n < 4 || b[0] != 0xFF || b[1] != 0xD8) return std::nullopt;
+  // JPEG: walk the segments to the first start-of-frame marker.
+  std::size_t at = 2;
+  while (at + 9 < n) {
+    if (b[at] != 0xFF) return std::nullopt;
+    const unsigned char marker = b[at + 1];
+    const std::size_t length = (std::size_t{b[at + 2]} << 8) | b[at + 3];
+    const bool sof = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+    if (sof)
+      return std::pair{std::uint32_t((b[at + 7] << 8) | b[at + 8]),
+                       std::uint32_t((b[at + 5] << 8) | b[at + 6])};
+    if (length < 2) return std::nullopt;
+    at += 2 + length;
+  }
+  return std::nullopt;
+}
 
 float srgbToLinear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
@@ -105,6 +139,12 @@ class TextureLoader {
     }
     if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
       why = "is empty or too large";
+      return std::nullopt;
+    }
+    if (const std::optional<std::pair<std::uint32_t, std::uint32_t>> dims = declaredSize(bytes, size);
+        dims && double(dims->first) * double(dims->second) > kMaxTexels) {
+      why = "is " + std::to_string(dims->first) + "x" + std::to_string(dims->second) +
+            " texels, more than the " + std::to_string(kMaxMegatexels) + " Mtexels a texture may have";
       return std::nullopt;
     }
     tinygltf::Image decoded;

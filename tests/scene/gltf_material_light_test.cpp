@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "core/constants.h"
 #include "gltf_test_builder.h"
@@ -147,6 +149,37 @@ TEST(GltfMaterial, MissingOrCorruptImagesWarnAndKeepTheFactor) {
   EXPECT_EQ(w.all().count("texture image '#1' could not be decoded; using the material factor only"), 1u);
   EXPECT_EQ(w.all().count("material '#0': texture 2 has no usable image; using the factor only"), 1u);
   EXPECT_EQ(w.all().size(), 3u);  // nothing more from tinygltf about the same images
+}
+
+// A tiny PNG or JPEG can declare a huge image (a 1 MB PNG of zeros declaring
+// 16000x16000 took 5 GB); the header is read before decoding allocates.
+TEST(GltfMaterial, ImagesDeclaringOverAHundredMegatexelsAreRefused) {
+  // PNG signature, IHDR length and type, width 20000, height 10000: nothing decodable follows.
+  const std::vector<std::uint8_t> png{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0,    13,
+                                      'I',  'H', 'D', 'R', 0,    0,    0x4e, 0x20, 0, 0, 0x27, 0x10};
+  // JPEG: SOI, an APP0 segment of 4 bytes, SOF0 with height 12000 and width 12000.
+  const std::vector<std::uint8_t> jpeg{0xFF, 0xD8, 0xFF, 0xE0, 0,    4, 0, 0,    0xFF, 0xC0, 0,    17,
+                                       8,    0x2e, 0xe0, 0x2e, 0xe0, 3, 1, 0x22, 0,    2,    0x11, 1};
+  GltfBuilder b;
+  b.doc["images"] = {{{"uri", "wide.png"}}, {{"uri", "square.jpg"}}};
+  b.doc["textures"] = {{{"source", 0}}, {{"source", 1}}};
+  b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+                         {"emissiveTexture", {{"index", 1}}}}};
+  b.node({{"mesh", b.square(0)}});
+  const std::string gltf = b.json();  // before the files: it resets the test directory
+  const std::filesystem::path dir = test::testDir();
+  test::writeFile(dir / "wide.png", png);
+  test::writeFile(dir / "square.jpg", jpeg);
+  Warnings w;
+  const SceneDesc d = loadGltf(test::writeFile(dir / "scene.gltf", gltf), -1, w);
+  EXPECT_TRUE(d.textures.empty());
+  EXPECT_EQ(
+      w.all().count("texture image 'wide.png' is 20000x10000 texels, more than the 128 Mtexels a texture "
+                    "may have; using the material factor only"),
+      1u);
+  EXPECT_EQ(w.all().count("texture image 'square.jpg' is 12000x12000 texels, more than the 128 Mtexels a "
+                          "texture may have; using the material factor only"),
+            1u);
 }
 
 TEST(GltfMaterial, BlendWarnsOnceAndRendersAsMask) {
