@@ -42,8 +42,6 @@ namespace detail {
 inline std::string lensMessage(std::string message) {
   if (message.find("film must lie behind the rear vertex") != std::string::npos)
     return "at this focus the image falls inside the lens (no film position behind its last surface)";
-  if (const std::size_t at = message.find("at inf m"); at != std::string::npos)
-    message.replace(at, 8, "at infinity");
   return message;
 }
 

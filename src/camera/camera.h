@@ -3,7 +3,9 @@
 // model is deterministic and knows nothing about threads or tiles.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <optional>
 #include <span>
 #include <string>
@@ -53,6 +55,14 @@ struct CameraInfo {
   double focalLengthMm = 0.0;
   std::string exposure;  // e.g. "normalized" or "physical 0.01s ISO100"
 };
+
+// A focus distance for describe(): "2m", "infinity".
+inline std::string focusText(double metres) {
+  if (std::isinf(metres)) return "infinity";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%gm", metres);
+  return buf;
+}
 
 class Camera {
  public:

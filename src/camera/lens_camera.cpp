@@ -36,9 +36,9 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
 
 std::string LensCamera::describe() const {
   char buf[240];
-  std::snprintf(buf, sizeof buf, "lens %s f=%.4gmm f/%.3g focus=%gm aperture=%s",
-                lens_->prescription().name.c_str(), lens_->paraxial().efl, fNumber_, params_.focusMetres,
-                lensrt::describe(params_.aperture).c_str());
+  std::snprintf(buf, sizeof buf, "lens %s f=%.4gmm f/%.3g focus=%s aperture=%s",
+                lens_->prescription().name.c_str(), lens_->paraxial().efl, fNumber_,
+                focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
   return buf;
 }
 

@@ -58,9 +58,9 @@ ThickLensCamera::ThickLensCamera(const Transform& worldFromCamera, const FilmGeo
 
 std::string ThickLensCamera::describe() const {
   char buf[240];
-  std::snprintf(buf, sizeof buf, "thick lens f=%gmm t=%gmm f/%g focus=%gm aperture=%s", params_.focalLengthMm,
-                params_.rearPrincipalZ - params_.frontPrincipalZ, params_.fNumber, params_.focusMetres,
-                lensrt::describe(params_.aperture).c_str());
+  std::snprintf(buf, sizeof buf, "thick lens f=%gmm t=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
+                params_.rearPrincipalZ - params_.frontPrincipalZ, params_.fNumber,
+                focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
   return buf;
 }
 

@@ -29,8 +29,9 @@ ThinLensCamera::ThinLensCamera(const Transform& worldFromCamera, const FilmGeome
 
 std::string ThinLensCamera::describe() const {
   char buf[200];
-  std::snprintf(buf, sizeof buf, "thin lens f=%gmm f/%g focus=%gm aperture=%s", params_.focalLengthMm,
-                params_.fNumber, params_.focusMetres, lensrt::describe(params_.aperture).c_str());
+  std::snprintf(buf, sizeof buf, "thin lens f=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
+                params_.fNumber, focusText(params_.focusMetres).c_str(),
+                lensrt::describe(params_.aperture).c_str());
   return buf;
 }
 

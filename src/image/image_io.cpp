@@ -47,8 +47,8 @@ std::string oneLine(std::string s) {
 
 std::string errnoReason(int err) {
   if (err == ENOSPC) return "disk full";
-  if (err == EACCES || err == EPERM || err == EROFS)
-    return "permission denied: " + std::string(std::strerror(err));
+  if (err == EACCES || err == EPERM) return "permission denied";
+  if (err == EROFS) return "read-only file system";
   return std::strerror(err);
 }
 

@@ -12,6 +12,7 @@ namespace lensrt {
 namespace {
 
 std::string metres(double mm) {
+  if (std::isinf(mm)) return "infinity";
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.4g m", mm / 1000.0);
   return buf;

@@ -307,6 +307,9 @@ class Traversal {
     if (const tinygltf::Value* ext = gltf::extension(node.extensions, "KHR_lights_punctual")) {
       const std::optional<double> light = gltf::numberMember(*ext, "light");
       if (!light) ctx_.fail("node " + std::to_string(index) + ": KHR_lights_punctual without a light index");
+      if (!gltf::isIndex(*light))
+        ctx_.fail("node " + std::to_string(index) + ": KHR_lights_punctual light " +
+                  gltf::numberText(*light) + " is not an index");
       if (auto l = gltf::convertLight(ctx_, static_cast<int>(*light), world)) desc_.lights.push_back(*l);
     }
   }
@@ -331,6 +334,8 @@ class Traversal {
     const auto read = [&](const char* name, int components) -> std::vector<float> {
       const std::optional<double> accessor = gltf::numberMember(*attributes, name);
       if (!accessor) return {};
+      if (!gltf::isIndex(*accessor))
+        ctx_.fail(label + " " + name + ": accessor " + gltf::numberText(*accessor) + " is not an index");
       return gltf::readFloats(ctx_, static_cast<int>(*accessor), components, (label + " " + name).c_str());
     };
     const std::vector<float> t = read("TRANSLATION", 3), r = read("ROTATION", 4), s = read("SCALE", 3);

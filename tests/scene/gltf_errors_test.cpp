@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <random>
+#include <sstream>
 
 #include "core/error.h"
 #include "gltf_test_builder.h"
@@ -261,6 +262,27 @@ TEST(GltfErrors, NodeAndMeshIndicesOutOfRange) {
   GltfBuilder m = validSquare();
   m.doc["nodes"][0]["mesh"] = 3;
   EXPECT_EQ(errorOf(m), "mesh 3 does not exist");
+}
+
+// Extension indices are plain JSON numbers: anything but a whole number that
+// fits an int is refused by name (4294967295 was converted to int: UB).
+TEST(GltfErrors, ExtensionIndicesThatAreNotIndices) {
+  for (const double bad : {4294967295.0, -1.0, 0.5}) {
+    GltfBuilder b;
+    b.doc["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    b.node({{"mesh", b.square()},
+            {"extensions", {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", bad}}}}}}}});
+    std::ostringstream text;
+    text.precision(17);
+    text << bad;
+    EXPECT_EQ(errorOf(b),
+              "node 0 EXT_mesh_gpu_instancing TRANSLATION: accessor " + text.str() + " is not an index");
+  }
+  GltfBuilder l = validSquare();
+  l.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  l.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}}};
+  l.doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 1e300;
+  EXPECT_EQ(errorOf(l), "node 0: KHR_lights_punctual light 1.0000000000000001e+300 is not an index");
 }
 
 // Random byte corruption of valid files: each either loads or throws
