@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <optional>
 
 namespace lensrt {
 
@@ -38,10 +40,30 @@ struct Vec3 {
   constexpr Vec3 operator/(const Vec3& b) const { return {x / b.x, y / b.y, z / b.z}; }
   constexpr Vec3 operator*(T s) const { return {x * s, y * s, z * s}; }
   constexpr Vec3 operator/(T s) const { return {x / s, y / s, z / s}; }
-  constexpr Vec3& operator+=(const Vec3& b) { x += b.x; y += b.y; z += b.z; return *this; }
-  constexpr Vec3& operator-=(const Vec3& b) { x -= b.x; y -= b.y; z -= b.z; return *this; }
-  constexpr Vec3& operator*=(const Vec3& b) { x *= b.x; y *= b.y; z *= b.z; return *this; }
-  constexpr Vec3& operator*=(T s) { x *= s; y *= s; z *= s; return *this; }
+  constexpr Vec3& operator+=(const Vec3& b) {
+    x += b.x;
+    y += b.y;
+    z += b.z;
+    return *this;
+  }
+  constexpr Vec3& operator-=(const Vec3& b) {
+    x -= b.x;
+    y -= b.y;
+    z -= b.z;
+    return *this;
+  }
+  constexpr Vec3& operator*=(const Vec3& b) {
+    x *= b.x;
+    y *= b.y;
+    z *= b.z;
+    return *this;
+  }
+  constexpr Vec3& operator*=(T s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
   constexpr bool operator==(const Vec3&) const = default;
 };
 
@@ -64,19 +86,44 @@ using Vec4f = Vec4<float>;
 using Rgb = Vec3f;
 
 template <class T>
-constexpr Vec3<T> operator*(T s, const Vec3<T>& v) { return v * s; }
+constexpr Vec3<T> operator*(T s, const Vec3<T>& v) {
+  return v * s;
+}
 template <class T>
-constexpr T dot(const Vec3<T>& a, const Vec3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr T dot(const Vec3<T>& a, const Vec3<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <class T>
 constexpr Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <class T>
-T length(const Vec3<T>& v) { return std::sqrt(dot(v, v)); }
+T length(const Vec3<T>& v) {
+  return std::sqrt(dot(v, v));
+}
 template <class T>
-constexpr T lengthSquared(const Vec3<T>& v) { return dot(v, v); }
+constexpr T lengthSquared(const Vec3<T>& v) {
+  return dot(v, v);
+}
 template <class T>
-Vec3<T> normalize(const Vec3<T>& v) { return v / length(v); }
+Vec3<T> normalize(const Vec3<T>& v) {
+  return v / length(v);
+}
+// v scaled to unit length, or nullopt when v is zero or not finite. When its
+// squared length under- or overflows (a normal of 1e-25 from a fuzzed glTF),
+// v is first scaled by its largest component so the result is still unit.
+template <class T>
+std::optional<Vec3<T>> unitVector(const Vec3<T>& v) {
+  const T len2 = dot(v, v);
+  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max())
+    return v / std::sqrt(len2);
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return std::nullopt;
+  const T ax = std::abs(v.x), ay = std::abs(v.y), az = std::abs(v.z);
+  const T m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+  if (!(m > T(0))) return std::nullopt;
+  const Vec3<T> s = v / m;
+  return s / length(s);
+}
 template <class T>
 constexpr Vec3<T> min(const Vec3<T>& a, const Vec3<T>& b) {
   return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z};
@@ -86,10 +133,16 @@ constexpr Vec3<T> max(const Vec3<T>& a, const Vec3<T>& b) {
   return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
 }
 template <class T>
-constexpr T maxComponent(const Vec3<T>& v) { return v.x > v.y ? (v.x > v.z ? v.x : v.z) : (v.y > v.z ? v.y : v.z); }
+constexpr T maxComponent(const Vec3<T>& v) {
+  return v.x > v.y ? (v.x > v.z ? v.x : v.z) : (v.y > v.z ? v.y : v.z);
+}
 template <class T>
-bool isFinite(const Vec3<T>& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool isFinite(const Vec3<T>& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 // Rec. 709 luminance of linear RGB.
-constexpr float luminance(const Rgb& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+constexpr float luminance(const Rgb& c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 }  // namespace lensrt

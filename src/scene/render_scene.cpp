@@ -305,25 +305,20 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   // glTF: counter-clockwise is the front unless the world transform mirrors.
   Vec3f ng = cross(p1 - p0, p2 - p0);
   if (rec.mirrored) ng = -ng;
-  const float ngLength = length(ng);
-  hit.geometricNormal = ngLength > 0 && std::isfinite(ngLength) ? ng / ngLength : normalize(-dir);
+  hit.geometricNormal = unitVector(ng).value_or(normalize(-dir));
 
   hit.shadingNormal = hit.geometricNormal;
   if (!m.normals.empty()) {
-    const Vec3f n = xf.normal(interp3(m.normals));
-    const float len = length(n);
-    if (len > 0 && std::isfinite(len)) hit.shadingNormal = n / len;
+    if (const auto n = unitVector(xf.normal(interp3(m.normals)))) hit.shadingNormal = *n;
     if (dot(hit.shadingNormal, hit.geometricNormal) < 0) hit.shadingNormal = -hit.shadingNormal;
   }
   if (!m.tangents.empty()) {
     const Vec4f& t0 = m.tangents[idx[0]];
     const Vec3f tv = xf.vector(t0.xyz() * w + m.tangents[idx[1]].xyz() * u + m.tangents[idx[2]].xyz() * v);
-    const float len = length(tv);
-    if (len > 0 && std::isfinite(len)) {
+    if (const auto tn = unitVector(tv)) {
       // A mirror flips cross(normal, tangent), so the handedness flips with it.
       const float handedness = (t0.w < 0 ? -1.0f : 1.0f) * (rec.mirrored ? -1.0f : 1.0f);
-      const Vec3f tn = tv / len;
-      hit.tangent = {tn.x, tn.y, tn.z, handedness};
+      hit.tangent = {tn->x, tn->y, tn->z, handedness};
     }
   }
   if (!m.uvs.empty()) hit.uv = m.uvs[idx[0]] * w + m.uvs[idx[1]] * u + m.uvs[idx[2]] * v;
