@@ -132,14 +132,24 @@ int runCompare(const CompareArgs& args, const CommandContext& context) {
     if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
   });
   const RenderJob job(sceneOptions, warnings);
+  const nlohmann::json lens = lensFigures(args.camera);
+  // An --fstop wider than the lens opens would leave the full lens at its
+  // widest and the ideal models wider: all four use the widest instead.
+  CameraOptions matched = args.camera;
+  const double wideOpen = lens.at("f_number_wide_open").get<double>();
+  if (matched.fNumber && *matched.fNumber < wideOpen * (1 - 1e-9)) {
+    warnings.warn(
+        fmt::format("{}: f/{:g} is wider than the lens allows; every model uses its widest aperture f/{:.3g}",
+                    args.camera.lens, *matched.fNumber, wideOpen));
+    matched.fNumber = wideOpen;
+  }
   // All four cameras first: a bad --focus fails before any render.
   std::vector<std::unique_ptr<Camera>> cameras;
   for (const char* model : kModels) {
-    CameraOptions options = args.camera;
+    CameraOptions options = matched;
     options.model = model;
     cameras.push_back(job.makeCamera(options, warnings));
   }
-  const nlohmann::json lens = lensFigures(args.camera);
 
   // 2. Render and write each model's EXR.
   std::vector<RenderJobResult> results;

@@ -3,6 +3,7 @@
 // vignetting while the pinhole loses none, and bad input fails in one line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -67,6 +68,29 @@ TEST(CompareCli, WritesEveryFileAndTheReport) {
   EXPECT_NE(html.find("<svg"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("http://"), html.find("http://www.w3.org/2000/svg"));  // no network links
+}
+
+// The double Gauss opens to f/2.03: asked for f/2, every model uses f/2.03
+// (not the ideal models at f/2 beside a full lens at f/2.03), with one warning.
+TEST(CompareCli, FstopWiderThanTheLensMatchesEveryModelToItsWidest) {
+  const TempDir tmp;
+  std::vector<std::string> args = compareArgs(tmp / "cmp");
+  args.erase(std::find(args.begin(), args.end(), "-q"));
+  *std::find(args.begin(), args.end(), "64x36") = "16x9";
+  args.insert(args.end(), {"--fstop", "2"});
+  const RunResult r = runLensrt(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(
+      r.err.find(
+          "warning: " + kDofRow +
+          ": dgauss-50mm: f/2 is wider than the lens allows; every model uses its widest aperture f/2.03\n"),
+      std::string::npos)
+      << r.err;
+  const nlohmann::json report = nlohmann::json::parse(cli::readFile(tmp / "cmp" / "report.json"));
+  const double wideOpen = report.at("lens").at("f_number_wide_open").get<double>();
+  EXPECT_NEAR(wideOpen, 2.03, 0.005);
+  for (const char* model : {"thin", "thick", "lens"})
+    EXPECT_DOUBLE_EQ(report.at("models").at(model).at("f_number").get<double>(), wideOpen) << model;
 }
 
 TEST(CompareCli, MissingLensIsAUsageError) {
