@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "optics/trace_lanes.h"
+
 namespace lensrt {
 
 namespace {
@@ -154,6 +156,7 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
 
 void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const {
   if (out.size() != rays.size()) throw std::invalid_argument("traceFromFilm: as many outputs as rays");
+  if (trace_lanes::available()) return traceFromFilmVectorized(rays, out);
   const int count = surfaceCount();
   const TraceSurface* const surfaces = surfaces_.data();
   for (std::size_t first = 0; first < rays.size(); first += kTraceLanes) {
@@ -175,6 +178,47 @@ void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::opt
         if (alive[l]) alive[l] = step<true>(s, eta, o[l], d[l], nullptr);
     }
     for (std::size_t l = 0; l < lanes; ++l) out[first + l] = alive[l] ? finished(o[l], d[l]) : std::nullopt;
+  }
+}
+
+// The same trace with spherical surfaces stepped in vector registers
+// (trace_lanes); flat ones (the stop, windows) one lane at a time.
+void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays,
+                                         std::span<std::optional<LensRay>> out) const {
+  static_assert(kTraceLanes == trace_lanes::kLanes);
+  std::vector<trace_lanes::Sphere> spheres(surfaces_.size());
+  for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+    const TraceSurface& s = surfaces_[i];
+    spheres[i] = {s.z,          s.radius,          s.absInvRadius,
+                  s.invRadius2, s.apertureRadius2, s.refracts ? s.etaFromFilm : 0.0};
+  }
+  for (std::size_t first = 0; first < rays.size(); first += kTraceLanes) {
+    const std::size_t lanes = std::min(kTraceLanes, rays.size() - first);
+    trace_lanes::Lanes L;  // lanes past `lanes` stay dead
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const LensRay& r = rays[first + l];
+      L.alive[l] = validInput<true>(r);
+      const Vec3d d = L.alive[l] ? normalize(r.direction) : Vec3d{};
+      L.ox[l] = r.origin.x, L.oy[l] = r.origin.y, L.oz[l] = r.origin.z;
+      L.dx[l] = d.x, L.dy[l] = d.y, L.dz[l] = d.z;
+    }
+    for (int i = surfaceCount() - 1; i >= 0; --i) {
+      const TraceSurface& s = surfaces_[i];
+      if (s.radius != 0.0) {
+        trace_lanes::sphereStep(spheres[i], L);
+        continue;
+      }
+      for (std::size_t l = 0; l < lanes; ++l) {
+        if (!L.alive[l]) continue;
+        Vec3d o{L.ox[l], L.oy[l], L.oz[l]}, d{L.dx[l], L.dy[l], L.dz[l]};
+        L.alive[l] = step<true>(s, spheres[i].eta, o, d, nullptr);
+        L.ox[l] = o.x, L.oy[l] = o.y, L.oz[l] = o.z;
+        L.dx[l] = d.x, L.dy[l] = d.y, L.dz[l] = d.z;
+      }
+    }
+    for (std::size_t l = 0; l < lanes; ++l)
+      out[first + l] =
+          L.alive[l] ? finished({L.ox[l], L.oy[l], L.oz[l]}, {L.dx[l], L.dy[l], L.dz[l]}) : std::nullopt;
   }
 }
 

@@ -78,6 +78,8 @@ class LensSystem {
   };
   template <bool kFromFilm>
   static bool step(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d, std::vector<Vec3d>* path);
+  // The batched trace on CPUs with vector units (optics/trace_lanes.h).
+  void traceFromFilmVectorized(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const;
   template <bool kFromFilm>
   std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path) const;
 
