@@ -188,3 +188,8 @@ with open(os.path.join(HERE, "png-named-gltf.gltf"), "wb") as f:
 d = copy.deepcopy(good)
 d["buffers"][0]["uri"] = "."  # this directory: used to read as an absurd size ("out of memory")
 write("buffer-uri-directory.gltf", d)
+
+d = copy.deepcopy(good)  # found by the sanitizer run of the glTF fuzz test (UB: converted to int)
+d["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+d["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 1e10}}}
+write("instancing-accessor-not-an-index.gltf", d)
