@@ -348,10 +348,15 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(impl_->top.get(), &context, &rh);
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  // Embree's float arithmetic can overflow on extreme geometry (fuzz_gltf: a
+  // hit at t = inf through an instance): a hit that is not finite is no hit.
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !std::isfinite(rh.ray.tfar)) return std::nullopt;
   // Instanced hits name the top-level instance in instID; baked ones in geomID.
   const unsigned topId = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
-  return impl_->hitAt(impl_->records[topId], rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.direction);
+  SurfaceHit hit =
+      impl_->hitAt(impl_->records[topId], rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.direction);
+  if (!isFinite(hit.position)) return std::nullopt;
+  return hit;
 }
 
 bool RenderScene::occluded(const Ray& ray) const {
