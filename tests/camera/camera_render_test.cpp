@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "camera/pinhole_camera.h"
 #include "camera/thin_lens_camera.h"
 #include "core/constants.h"
 #include "render/environment.h"
@@ -89,6 +90,42 @@ TEST(CameraRender, ThinLensBlursAnEdgeByTheBlurDisk) {
   RecordProperty("predicted_mm", std::to_string(predicted));
   EXPECT_NEAR(diameter, predicted, 0.05 * predicted) << "blur disk diameter in mm";
   EXPECT_NEAR(mean, film.sensorWidthMm / 2, 0.5 * pixel) << "the edge images on the axis";
+}
+
+// Closing the aperture turns the thin lens into the pinhole with the field of
+// view the lens has at that focus: rendered with the same samples, their
+// images of an emissive edge agree (after the bellows factor (f/v)^2 that the
+// thin lens records at a finite focus and the pinhole does not), while at f/2
+// the out-of-focus edge differs visibly.
+TEST(CameraRender, ThinLensWithATinyApertureRendersThePinholeImage) {
+  const FilmGeometry film{128, 16, 36.0, 4.5};  // 0.28 mm pixels
+  const double f = 50;
+  for (const double focusM : {kInfinity, 2.0}) {
+    SCOPED_TRACE("focus " + std::to_string(focusM) + " m");
+    const double v = std::isinf(focusM) ? f : f * focusM * 1e3 / (focusM * 1e3 - f);
+    const double bellows = (f / v) * (f / v);
+    const PinholeCamera pinhole(Transform(), film, 2 * std::atan(film.sensorHeightMm / 2 / v), Exposure{},
+                                2.0, "");
+    const auto render = [&](const Camera& cam) {
+      SceneDesc desc = squareScene(1.0f, 2.0f, 1.0f);  // the edge 1 m away, out of focus
+      for (Vec3f& p : desc.meshes[0].positions) p.x = std::max(p.x, 0.0f);
+      return test::columnProfile(renderScene(std::move(desc), cam, Environment(), 16));
+    };
+    const std::vector<double> reference = render(pinhole);
+    const auto largestDifference = [&](double fNumber) {
+      ThinLensParams p;
+      p.focalLengthMm = f;
+      p.fNumber = fNumber;
+      p.focusMetres = focusM;
+      const std::vector<double> thin = render(ThinLensCamera(Transform(), film, p));
+      double worst = 0;
+      for (std::size_t x = 0; x < thin.size(); ++x)
+        worst = std::max(worst, std::abs(thin[x] / bellows - reference[x]));
+      return worst;
+    };
+    EXPECT_LT(largestDifference(1000.0), 0.01);
+    EXPECT_GT(largestDifference(2.0), 0.1);
+  }
 }
 
 }  // namespace
