@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/lens_loading.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "optics/focus.h"
@@ -127,12 +128,15 @@ LensView prepareLensView(const LensViewOptions& o, Warnings& warnings) {
   const double focusMm = parseFocusMm(o.focus);
   if (o.fNumber && !(*o.fNumber > 0.0 && std::isfinite(*o.fNumber)))
     throw CLI::ValidationError("--fstop", "must be a positive f-number");
-  const LensPrescription design = loadLens(findLens(o.lens, LENSRT_LENS_DIR));
-  const double widest = computeParaxial(design).fNumber;
-  LensSystem lens(o.fNumber ? stopDown(design, *o.fNumber, warnings) : design);
-  const double film = focusFilmDistance(lens, focusMm);
-  LensView view{std::move(lens), widest, focusMm, film, w, h};
-  return view;
+  // The same lens errors, worded the same way, as lensrt render's.
+  const UserLens user = loadUserLens(o.lens, LENSRT_LENS_DIR);
+  requireRealImage(user);
+  return withLensErrors(user, [&] {
+    const double widest = computeParaxial(user.prescription).fNumber;
+    LensSystem lens(o.fNumber ? stopDown(user.prescription, *o.fNumber, warnings) : user.prescription);
+    const double film = focusFilmDistance(lens, focusMm);
+    return LensView{std::move(lens), widest, focusMm, film, w, h};
+  });
 }
 
 }  // namespace lensrt

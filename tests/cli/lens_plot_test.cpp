@@ -333,5 +333,22 @@ TEST(LensPlotCli, BadArgumentsFailWithOneLineAndLeaveTheOutputAlone) {
     EXPECT_EQ(entry.path().filename(), "keep.svg") << "no temporary left behind";
 }
 
+// lens plot and lens diagram word lens errors as lensrt render does: naming
+// the lens as typed (a diverging lens used to be blamed on its internal name).
+TEST(LensPlotCli, LensErrorsNameTheLensAsTyped) {
+  const TempDir dir;
+  const std::string diverging = (dir / "diverging.lens").string();
+  cli::writeFile(diverging, "radius thick n_d V_d ap\n-50 3 1.5 60 20\n50 10 1 0 20\nstop 10 15\n");
+  RunResult r = runLensrt({"lens", "plot", diverging, "--what", "spot", "--csv", "-"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err,
+            "lensrt: error: " + diverging +
+                ": a diverging lens (focal length -49.5 mm) forms no real image, so no film can be focused "
+                "behind it\n");
+  r = runLensrt({"lens", "diagram", dir.path().string(), "-o", (dir / "d.svg").string()});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "lensrt: error: " + dir.path().string() + ": is a directory, not a lens file\n");
+}
+
 }  // namespace
 }  // namespace lensrt
