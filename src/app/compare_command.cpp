@@ -20,6 +20,7 @@
 #include "app/compare_report.h"
 #include "app/render_job.h"
 #include "app/render_options.h"
+#include "app/text_file.h"
 #include "core/error.h"
 #include "image/contact_sheet.h"
 #include "image/heatmap.h"

@@ -1,12 +1,9 @@
 #include "app/compare_report.h"
 
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <random>
 #include <system_error>
 
 #include "core/error.h"
@@ -93,29 +90,6 @@ double channelMean(const Image& image, const std::string& channel) {
 double meanLuminance(const Image& image) {
   return 0.2126 * channelMean(image, "R") + 0.7152 * channelMean(image, "G") +
          0.0722 * channelMean(image, "B");
-}
-
-void writeTextFileAtomically(const std::filesystem::path& file, const std::string& contents) {
-  std::filesystem::path dir = file.parent_path();
-  if (dir.empty()) dir = ".";
-  const std::filesystem::path temp =
-      dir / fmt::format(".{}.tmp{}-{}", file.filename().string(), getpid(), std::random_device{}());
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << contents;
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(temp, ec);
-      throw InputError(file.string(), "cannot write the file");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, file, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw InputError(file.string(), "cannot write the file: " + ec.message());
-  }
 }
 
 std::string vignettingChartSvg(const std::vector<std::string>& models,

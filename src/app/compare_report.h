@@ -23,10 +23,6 @@ double channelMean(const Image& image, const std::string& channel);
 // Mean Rec. 709 luminance of R,G,B.
 double meanLuminance(const Image& image);
 
-// Writes `contents` to a temporary file beside `file` and renames it over
-// `file`, so a reader never sees half a file. Throws InputError.
-void writeTextFileAtomically(const std::filesystem::path& file, const std::string& contents);
-
 // report.html from report.json's document (see compare_command.cpp for its
 // keys): the contact sheet, the heat maps, a table and the vignetting chart.
 std::string compareReportHtml(const nlohmann::json& report);

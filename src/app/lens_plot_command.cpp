@@ -7,6 +7,7 @@
 #include "app/lens_plot.h"
 #include "app/lens_plot_setup.h"
 #include "app/lens_subcommands.h"
+#include "app/text_file.h"
 
 namespace lensrt {
 

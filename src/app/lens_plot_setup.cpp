@@ -3,12 +3,8 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "app/lens_loading.h"
 #include "core/constants.h"
@@ -75,36 +71,6 @@ void checkOutputDirectory(const std::string& output) {
     throw InputError(output, "cannot write: directory '" + dir.string() + "' does not exist");
   if (::access(dir.c_str(), W_OK) != 0)
     throw InputError(output, "cannot write: directory '" + dir.string() + "' is not writable");
-}
-
-void writeTextOutput(const std::string& output, const std::string& text) {
-  if (output == "-") {
-    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-      throw InputError("<stdout>", std::string("cannot write: ") + std::strerror(errno));
-    return;
-  }
-  const std::filesystem::path file(output);
-  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  const std::filesystem::path tmp =
-      dir / fmt::format(".{}.tmp-{}", file.filename().string(), static_cast<long>(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(output, std::string("cannot write: ") + std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw InputError(output, "cannot write: disk full or I/O error");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw InputError(output, "cannot write: " + ec.message());
-  }
 }
 
 double LensView::halfDiagonalMm() const {

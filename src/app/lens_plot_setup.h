@@ -49,8 +49,4 @@ void checkSvgOutput(const std::string& output);
 // checked before the work so a mistake costs no tracing.
 void checkOutputDirectory(const std::string& output);
 
-// Writes `text` atomically (a temporary beside the target, renamed over it);
-// "-" writes to standard output. InputError(file, reason) on failure.
-void writeTextOutput(const std::string& output, const std::string& text);
-
 }  // namespace lensrt

@@ -43,13 +43,14 @@ std::string checkResolution(const std::string& text) {
   const std::optional<int> h = x == std::string::npos ? std::optional<int>(0) : parseInt(text.substr(x + 1));
   if (!w || !h) return "expected WIDTHxHEIGHT in pixels (e.g. 640x360) or WIDTH, got '" + text + "'";
   if (*w < 1 || *w > kMaxDimension || (x != std::string::npos && (*h < 1 || *h > kMaxDimension)))
-    return "width and height must be between 1 and " + std::to_string(kMaxDimension) +
-           " pixels, got '" + text + "'";
+    return "width and height must be between 1 and " + std::to_string(kMaxDimension) + " pixels, got '" +
+           text + "'";
   return "";
 }
 
 Resolution parseResolution(const std::string& text) {
-  if (const std::string why = checkResolution(text); !why.empty()) throw CLI::ValidationError("--res: " + why);
+  if (const std::string why = checkResolution(text); !why.empty())
+    throw CLI::ValidationError("--res: " + why);
   const std::size_t x = text.find_first_of("xX");
   return {*parseInt(text.substr(0, x)), x == std::string::npos ? 0 : *parseInt(text.substr(x + 1))};
 }

@@ -1,14 +1,10 @@
 #include "app/svg_writer.h"
 
 #include <fmt/core.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <system_error>
 
+#include "app/text_file.h"
 #include "core/error.h"
 
 namespace lensrt {
@@ -122,28 +118,7 @@ std::string Svg::str() const {
 }
 
 void Svg::write(const std::filesystem::path& file) const {
-  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  const std::filesystem::path tmp =
-      dir / fmt::format(".{}.tmp-{}", file.filename().string(), static_cast<long>(::getpid()));
-  const std::string text = str();
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(file.string(), std::string("cannot write: ") + std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw InputError(file.string(), "cannot write: disk full or I/O error");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw InputError(file.string(), "cannot write: " + ec.message());
-  }
+  writeTextFileAtomically(file, str());
 }
 
 }  // namespace lensrt
