@@ -29,6 +29,7 @@ class Transform {
 
   Transform operator*(const Transform& b) const;
   Transform inverse() const;  // throws std::domain_error when singular
+  bool invertible() const { return !(inv_ == Matrix{}); }
   const Matrix& matrix() const { return m_; }
   bool operator==(const Transform&) const = default;
 

@@ -246,6 +246,11 @@ Transform localTransform(const Context& ctx, int index, const tinygltf::Node& no
   Transform local;
   if (!node.matrix.empty()) {
     if (node.matrix.size() != 16) ctx.fail(label + ": matrix needs 16 values");
+    // glTF node matrices are affine (decomposable into T * R * S): a
+    // projective last row has no meaning here and no usable inverse.
+    const std::vector<double>& m = node.matrix;
+    if (m[3] != 0.0 || m[7] != 0.0 || m[11] != 0.0 || m[15] != 1.0)
+      ctx.fail(label + ": matrix is not affine (its last row must be 0 0 0 1)");
     local = Transform::fromColumnMajor(node.matrix.data());
   } else {
     local = trs(ctx, label, node.translation, node.rotation, node.scale);

@@ -14,10 +14,12 @@ namespace lensrt {
 namespace {
 
 // Zero-scale placements have no area (and no inverse for normals): nothing to
-// hit. Nearly singular ones neither (a scale like 1e-38; found by fuzz_gltf).
+// hit. Nearly singular ones neither (a scale like 1e-38; found by fuzz_gltf),
+// nor products whose singular factor (a node scaled by 1e-40 under one scaled
+// by 1e20) left a determinant that looks fine but no inverse.
 bool degenerate(const Transform& xf) {
   const double det = xf.determinant3x3();
-  if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) return true;
+  if (!(std::abs(det) > 1e-30) || !std::isfinite(det) || !xf.invertible()) return true;
   const Transform inverse = xf.inverse();
   const Transform::Matrix& inv = inverse.matrix();
   for (int r = 0; r < 3; ++r)

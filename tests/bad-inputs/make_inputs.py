@@ -193,3 +193,7 @@ d = copy.deepcopy(good)  # found by the sanitizer run of the glTF fuzz test (UB:
 d["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
 d["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 1e10}}}
 write("instancing-accessor-not-an-index.gltf", d)
+
+d = copy.deepcopy(good)  # found by fuzz_gltf: no inverse, an uncaught exception
+d["nodes"][0]["matrix"] = [1, 0, 0, 1, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 0]
+write("projective-matrix.gltf", d)

@@ -51,6 +51,10 @@ TEST(Transform, LookAtPointsMinusZAtTarget) {
 
 TEST(Transform, SingularInverseThrows) {
   EXPECT_THROW(Transform::scale({0, 1, 1}).inverse(), std::domain_error);
+  EXPECT_FALSE(Transform::scale({0, 1, 1}).invertible());
+  EXPECT_TRUE(Transform::scale({2, 1, 1}).invertible());
+  // A product with a singular factor has no inverse either.
+  EXPECT_FALSE((Transform::scale({2, 2, 2}) * Transform::scale({0, 1, 1})).invertible());
 }
 
 TEST(Frame, IsOrthonormalForManyNormals) {
