@@ -66,10 +66,12 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
       const float len = length(c);
       tri.area = 0.5f * len;
       tri.normal = len > 0 ? c * (handed / len) : Vec3f{0, 0, 1};
-      if (!mesh.uvs.empty()) {
-        tri.uv0 = mesh.uvs[i0];
-        tri.uv1 = mesh.uvs[i1];
-        tri.uv2 = mesh.uvs[i2];
+      // The UV set the emissive texture reads (TEXCOORD_0 or TEXCOORD_1).
+      const std::vector<Vec2f>& uvs = m.emissiveTexture.texCoord == 1 ? mesh.uvs1 : mesh.uvs;
+      if (!uvs.empty()) {
+        tri.uv0 = uvs[i0];
+        tri.uv1 = uvs[i1];
+        tri.uv2 = uvs[i2];
       }
       tri.material = mesh.material;
       triangles_.push_back(tri);
@@ -112,7 +114,8 @@ std::optional<LightSample> LightSet::sampleTriangle(const Triangle& t, const Vec
   const Vec3f wi = d / dist;
   const float cosLight = -dot(wi, t.normal);  // > 0 when p sees the front
   const Vec2f uv = t.uv0 * (1 - b1 - b2) + t.uv1 * b1 + t.uv2 * b2;
-  const Rgb le = emittedRadiance(*materials_, t.material, uv, cosLight);
+  const Rgb le =
+      emittedRadiance(*materials_, t.material, uv, uv, cosLight);  // uvs hold the emissive slot's set
   if (!(maxComponent(le) > 0) || std::abs(cosLight) < 1e-7f) return std::nullopt;
   return LightSample{wi, dist, le, dist2 / (std::abs(cosLight) * t.area), false};
 }

@@ -23,9 +23,14 @@ MaterialTable::Extra& MaterialTable::extra(int index) {
 
 namespace {
 
-Vec4f lookup(const SceneDesc& scene, const TextureRef& ref, const Vec2f& uv) {
+// A texture slot at a point with UV sets uv0 (TEXCOORD_0) and uv1 (TEXCOORD_1):
+// the slot picks its set and applies its KHR_texture_transform.
+Vec4f lookup(const SceneDesc& scene, const TextureRef& ref, const Vec2f& uv0, const Vec2f& uv1) {
   if (!ref.valid() || std::size_t(ref.texture) >= scene.textures.size()) return {1, 1, 1, 1};
-  return sampleTexture(scene.textures[ref.texture], uv);
+  return sampleTexture(scene.textures[ref.texture], ref.uv(uv0, uv1));
+}
+Vec4f lookup(const SceneDesc& scene, const TextureRef& ref, const SurfaceHit& hit) {
+  return lookup(scene, ref, hit.uv, hit.uv1);
 }
 
 // World-space tangent (xyz = dp/du, w = handedness) of the hit triangle from
@@ -54,11 +59,12 @@ Vec4f faceTangent(const SceneDesc& scene, const SurfaceHit& hit) {
 
 }  // namespace
 
-Rgb emittedRadiance(const MaterialTable& materials, int index, const Vec2f& uv, float cosFront) {
+Rgb emittedRadiance(const MaterialTable& materials, int index, const Vec2f& uv0, const Vec2f& uv1,
+                    float cosFront) {
   const Material& m = materials.material(index);
   if (!m.isEmissive()) return {0, 0, 0};
   if (!m.doubleSided && cosFront <= 0) return {0, 0, 0};
-  return m.emissive * lookup(materials.scene(), m.emissiveTexture, uv).xyz();
+  return m.emissive * lookup(materials.scene(), m.emissiveTexture, uv0, uv1).xyz();
 }
 
 ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo) {
@@ -74,7 +80,7 @@ ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& 
   const bool hasTangent = hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0;
   const Vec4f tangent4 = !m.normalTexture.valid() || hasTangent ? hit.tangent : faceTangent(scene, hit);
   if (m.normalTexture.valid() && (tangent4.x != 0 || tangent4.y != 0 || tangent4.z != 0)) {
-    const Vec4f t = lookup(scene, m.normalTexture, hit.uv);
+    const Vec4f t = lookup(scene, m.normalTexture, hit);
     const Vec3f local{(2 * t.x - 1) * m.normalScale, (2 * t.y - 1) * m.normalScale, 2 * t.z - 1};
     // Gram-Schmidt the interpolated tangent against the shading normal.
     const Vec3f tangent0 = tangent4.xyz();
@@ -91,13 +97,15 @@ ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& 
   if (dot(n, wo) <= 1e-4f) n = sp.geometricNormal;
   sp.frame = Frame::fromNormal(n);
 
-  const Vec4f base = lookup(scene, m.baseColorTexture, hit.uv);
-  sp.bsdf.baseColor = Rgb{m.baseColor.x * base.x, m.baseColor.y * base.y, m.baseColor.z * base.z};
-  const Vec4f mr = lookup(scene, m.metallicRoughnessTexture, hit.uv);
+  // glTF: base colour = factor * texture * COLOR_0 (alpha is the scene's alpha filter's job).
+  const Vec4f base = lookup(scene, m.baseColorTexture, hit);
+  sp.bsdf.baseColor = Rgb{m.baseColor.x * base.x * hit.color.x, m.baseColor.y * base.y * hit.color.y,
+                          m.baseColor.z * base.z * hit.color.z};
+  const Vec4f mr = lookup(scene, m.metallicRoughnessTexture, hit);
   sp.bsdf.roughness = std::clamp(m.roughness * mr.y, 0.0f, 1.0f);
   sp.bsdf.metallic = std::clamp(m.metallic * mr.z, 0.0f, 1.0f);
   sp.bsdf.specularWeight = materials.extra(hit.material).specularWeight;
-  sp.emission = emittedRadiance(materials, hit.material, hit.uv, dot(wo, hit.geometricNormal));
+  sp.emission = emittedRadiance(materials, hit.material, hit.uv, hit.uv1, dot(wo, hit.geometricNormal));
   return sp;
 }
 

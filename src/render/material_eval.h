@@ -44,9 +44,10 @@ struct ShadingPoint {
 // wo: unit world direction toward the viewer.
 ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo);
 
-// Emitted radiance of a material at uv leaving a surface whose winding normal
-// makes cosine `cosFront` with the direction of travel (front-face emission only
-// unless the material is double sided).
-Rgb emittedRadiance(const MaterialTable& materials, int material, const Vec2f& uv, float cosFront);
+// Emitted radiance of a material at a point with UV sets uv0 and uv1 leaving a
+// surface whose winding normal makes cosine `cosFront` with the direction of
+// travel (front-face emission only unless the material is double sided).
+Rgb emittedRadiance(const MaterialTable& materials, int material, const Vec2f& uv0, const Vec2f& uv1,
+                    float cosFront);
 
 }  // namespace lensrt

@@ -27,7 +27,8 @@ struct Context {
 // beyond the accessor reader's integer formats).
 inline bool isSupportedExtension(std::string_view name) {
   return name == "KHR_lights_punctual" || name == "KHR_materials_emissive_strength" ||
-         name == "EXT_mesh_gpu_instancing" || name == "KHR_mesh_quantization";
+         name == "EXT_mesh_gpu_instancing" || name == "KHR_mesh_quantization" ||
+         name == "KHR_texture_transform";
 }
 
 }  // namespace lensrt::gltf

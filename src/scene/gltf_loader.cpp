@@ -9,8 +9,10 @@
 #include <cstdint>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/error.h"
@@ -211,6 +213,41 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
     if (!oneLine(line).empty() && !aboutImage(line)) warnings.warn(oneLine(line));
   if (!ok) throwParseError(name, err.empty() ? "cannot parse the glTF file" : oneLine(err));
   return model;
+}
+
+// "major.minor" as the glTF spec writes versions; nullopt for anything else.
+std::optional<std::pair<int, int>> parseVersion(const std::string& text) {
+  const std::size_t dot = text.find('.');
+  if (dot == 0 || dot == std::string::npos || dot + 1 == text.size() || dot > 4 || text.size() - dot > 5)
+    return std::nullopt;
+  const auto digits = [](std::string_view d) {
+    return std::all_of(d.begin(), d.end(),
+                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+  };
+  if (!digits(std::string_view(text).substr(0, dot)) || !digits(std::string_view(text).substr(dot + 1)))
+    return std::nullopt;
+  return std::pair{std::stoi(text.substr(0, dot)), std::stoi(text.substr(dot + 1))};
+}
+
+// glTF 2.0: asset.version must be 2.x, unless asset.minVersion says the file
+// needs no more than 2.0 (a later 2.x or 3.x file readable as 2.0).
+void checkVersion(const Context& ctx) {
+  const tinygltf::Asset& asset = ctx.model.asset;
+  if (!asset.minVersion.empty()) {
+    const auto min = parseVersion(asset.minVersion);
+    if (!min) ctx.fail("asset.minVersion '" + asset.minVersion + "' is not a glTF version (major.minor)");
+    if (*min > std::pair{2, 0})
+      ctx.fail("glTF minVersion " + asset.minVersion + " is not supported (lensrt reads glTF 2.0)");
+    return;
+  }
+  if (asset.version.empty()) {
+    ctx.warnings.warn("asset.version is missing; reading the file as glTF 2.0");
+    return;
+  }
+  const auto version = parseVersion(asset.version);
+  if (!version) ctx.fail("asset.version '" + asset.version + "' is not a glTF version (major.minor)");
+  if (version->first != 2)
+    ctx.fail("glTF version " + asset.version + " is not supported (lensrt reads glTF 2.x)");
 }
 
 void checkExtensions(const Context& ctx) {
@@ -436,6 +473,12 @@ void checkRenderable(const Context& ctx, const SceneDesc& desc, const gltf::Mesh
   if (stats.degenerateTriangles > 0)
     ctx.warnings.warn(std::to_string(stats.degenerateTriangles) +
                       " degenerate (zero-area) triangles dropped");
+  // A camera looking at nothing but the environment is a flat-field test of
+  // the lens (vignetting): render it.
+  if (desc.instances.empty() && !desc.cameras.empty()) {
+    ctx.warnings.warn("the scene has no meshes: rendering the environment only");
+    return;
+  }
   if (ctx.model.meshes.empty()) ctx.fail("nothing to render: the file has no meshes");
   if (desc.instances.empty()) {
     if (stats.degenerateTriangles > 0 && stats.triangles == 0)
@@ -455,6 +498,7 @@ SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& 
   const std::string name = file.string();
   const tinygltf::Model model = parse(file, name, warnings);
   const Context ctx{model, name, warnings};
+  checkVersion(ctx);
   checkExtensions(ctx);
   SceneDesc desc;
   desc.sourceFile = name;

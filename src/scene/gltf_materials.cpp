@@ -59,21 +59,32 @@ class TextureLoader {
  public:
   TextureLoader(const Context& ctx, SceneDesc& desc) : ctx_(ctx), desc_(desc) {}
 
-  // TextureRef for a material slot, or none (with a warning) when unusable.
-  TextureRef ref(int textureIndex, int texCoord, bool srgb, const std::string& material) {
+  // TextureRef for a material slot (a glTF textureInfo: index, texCoord and
+  // its extensions), or none (with a warning) when unusable.
+  TextureRef ref(int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,
+                 const std::string& material, const char* slot) {
     if (textureIndex < 0) return {};
-    if (texCoord != 0) {
-      ctx_.warnings.warn(
-          "textures on TEXCOORD_1 or higher are not supported: those slots use the factor only");
+    const std::string where = "material '" + material + "' " + slot;
+    TextureRef out;
+    out.texCoord = texCoord;
+    if (const tinygltf::Value* ext = extension(extensions, "KHR_texture_transform"))
+      out.transform = textureTransform(*ext, where, out.texCoord);
+    if (out.texCoord < 0 || out.texCoord > 1) {
+      ctx_.warnings.warn(where + ": texCoord " + std::to_string(out.texCoord) +
+                         " is not supported (only TEXCOORD_0 and TEXCOORD_1); using the factor only");
       return {};
     }
     const auto key = std::make_pair(textureIndex, srgb);
-    if (const auto it = cache_.find(key); it != cache_.end()) return {it->second, 0};
-    std::optional<Texture> tex = load(textureIndex, srgb, material);
-    const int index = tex ? static_cast<int>(desc_.textures.size()) : -1;
-    if (tex) desc_.textures.push_back(std::move(*tex));
-    cache_[key] = index;
-    return {index, 0};
+    auto it = cache_.find(key);
+    if (it == cache_.end()) {
+      std::optional<Texture> tex = load(textureIndex, srgb, material);
+      const int index = tex ? static_cast<int>(desc_.textures.size()) : -1;
+      if (tex) desc_.textures.push_back(std::move(*tex));
+      it = cache_.emplace(key, index).first;
+    }
+    if (it->second < 0) return {};
+    out.texture = it->second;
+    return out;
   }
 
  private:
@@ -197,6 +208,42 @@ class TextureLoader {
     return t;
   }
 
+  // KHR_texture_transform: offset, rotation (radians, counter-clockwise in
+  // the image), scale, and a texCoord that overrides the textureInfo's. A
+  // malformed member is ignored with a warning; the rest still applies.
+  UvTransform textureTransform(const tinygltf::Value& ext, const std::string& where, int& texCoord) const {
+    const auto pair = [&](const char* key, Vec2f fallback) {
+      const tinygltf::Value* v = member(ext, key);
+      if (!v) return fallback;
+      if (v->IsArray() && v->ArrayLen() == 2 && v->Get(0).IsNumber() && v->Get(1).IsNumber()) {
+        const double x = v->Get(0).GetNumberAsDouble(), y = v->Get(1).GetNumberAsDouble();
+        if (std::abs(x) <= 1e30 && std::abs(y) <= 1e30) return Vec2f{float(x), float(y)};
+      }
+      ctx_.warnings.warn(where + ": KHR_texture_transform " + key + " is not two numbers; ignored");
+      return fallback;
+    };
+    const Vec2f offset = pair("offset", {0, 0});
+    const Vec2f scale = pair("scale", {1, 1});
+    float rotation = 0;
+    if (const tinygltf::Value* r = member(ext, "rotation")) {
+      if (r->IsNumber() && std::abs(r->GetNumberAsDouble()) <= 1e6)
+        rotation = float(std::remainder(r->GetNumberAsDouble(), 2 * 3.14159265358979323846));
+      else
+        ctx_.warnings.warn(where + ": KHR_texture_transform rotation is not a number of radians; ignored");
+    }
+    if (const tinygltf::Value* t = member(ext, "texCoord")) {
+      if (t->IsNumber() && isIndex(t->GetNumberAsDouble()))
+        texCoord = static_cast<int>(t->GetNumberAsDouble());
+      else
+        ctx_.warnings.warn(where + ": KHR_texture_transform texCoord is not an index; ignored");
+    }
+    return UvTransform::fromOffsetRotationScale(offset, rotation, scale);
+  }
+
+  // glTF sampler: wrapS/wrapT per axis; magFilter picks nearest or bilinear.
+  // Without ray differentials the renderer cannot tell magnification from
+  // minification: the many samples per pixel average the texels under a pixel
+  // instead of mipmaps, and minFilter only decides when magFilter is absent.
   void applySampler(int samplerIndex, Texture& tex) const {
     if (samplerIndex < 0) return;  // glTF default: repeat, linear
     if (static_cast<std::size_t>(samplerIndex) >= ctx_.model.samplers.size()) {
@@ -205,11 +252,38 @@ class TextureLoader {
       return;
     }
     const tinygltf::Sampler& s = ctx_.model.samplers[static_cast<std::size_t>(samplerIndex)];
-    tex.wrapRepeatS = s.wrapS != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-    tex.wrapRepeatT = s.wrapT != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
-    tex.mirrorS = s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT;
-    tex.mirrorT = s.wrapT == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT;
-    tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+    const std::string where = "texture sampler " + std::to_string(samplerIndex) + ": ";
+    const auto wrap = [&](int mode, const char* axis, bool& repeat, bool& mirror) {
+      if (mode != TINYGLTF_TEXTURE_WRAP_REPEAT && mode != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE &&
+          mode != TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) {
+        ctx_.warnings.warn(where + axis + " " + std::to_string(mode) +
+                           " is not a glTF wrap mode; using REPEAT");
+        mode = TINYGLTF_TEXTURE_WRAP_REPEAT;
+      }
+      repeat = mode != TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+      mirror = mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT;
+    };
+    wrap(s.wrapS, "wrapS", tex.wrapRepeatS, tex.mirrorS);
+    wrap(s.wrapT, "wrapT", tex.wrapRepeatT, tex.mirrorT);
+    const bool magValid = s.magFilter == -1 || s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+                          s.magFilter == TINYGLTF_TEXTURE_FILTER_LINEAR;
+    const bool minValid = s.minFilter == -1 || s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+                          s.minFilter == TINYGLTF_TEXTURE_FILTER_LINEAR ||
+                          (s.minFilter >= TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST &&
+                           s.minFilter <= TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR);
+    if (!magValid)
+      ctx_.warnings.warn(where + "magFilter " + std::to_string(s.magFilter) +
+                         " is not a glTF filter; using LINEAR");
+    if (!minValid)
+      ctx_.warnings.warn(where + "minFilter " + std::to_string(s.minFilter) +
+                         " is not a glTF filter; ignored");
+    if (magValid && s.magFilter != -1) {
+      tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+    } else if (minValid) {
+      tex.nearest = s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ||
+                    s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST ||
+                    s.minFilter == TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR;
+    }
   }
 
   const Context& ctx_;
@@ -222,7 +296,8 @@ float finiteOr(double v, float fallback) {
 }
 
 void warnTextureInfoExtensions(const Context& ctx, const tinygltf::ExtensionMap& extensions) {
-  for (const auto& [name, value] : extensions) ctx.warnUnsupportedExtension(name);
+  for (const auto& [name, value] : extensions)
+    if (name != "KHR_texture_transform") ctx.warnUnsupportedExtension(name);
 }
 
 }  // namespace
@@ -246,13 +321,14 @@ void loadMaterials(const Context& ctx, SceneDesc& desc) {
     if (pbr.baseColorFactor.size() == 4)
       m.baseColor = {finiteOr(pbr.baseColorFactor[0], 1), finiteOr(pbr.baseColorFactor[1], 1),
                      finiteOr(pbr.baseColorFactor[2], 1), finiteOr(pbr.baseColorFactor[3], 1)};
-    m.baseColorTexture =
-        textures.ref(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true, m.name);
+    const auto slot = [&](const auto& info, bool srgb, const char* name) {
+      return textures.ref(info.index, info.texCoord, info.extensions, srgb, m.name, name);
+    };
+    m.baseColorTexture = slot(pbr.baseColorTexture, true, "baseColorTexture");
     m.metallic = finiteOr(pbr.metallicFactor, 1);
     m.roughness = finiteOr(pbr.roughnessFactor, 1);
-    m.metallicRoughnessTexture = textures.ref(pbr.metallicRoughnessTexture.index,
-                                              pbr.metallicRoughnessTexture.texCoord, false, m.name);
-    m.normalTexture = textures.ref(gm.normalTexture.index, gm.normalTexture.texCoord, false, m.name);
+    m.metallicRoughnessTexture = slot(pbr.metallicRoughnessTexture, false, "metallicRoughnessTexture");
+    m.normalTexture = slot(gm.normalTexture, false, "normalTexture");
     m.normalScale = finiteOr(gm.normalTexture.scale, 1);
     float strength = 1;
     if (const tinygltf::Value* ext = extension(gm.extensions, "KHR_materials_emissive_strength"))
@@ -261,14 +337,13 @@ void loadMaterials(const Context& ctx, SceneDesc& desc) {
       m.emissive = Vec3f{finiteOr(gm.emissiveFactor[0], 0), finiteOr(gm.emissiveFactor[1], 0),
                          finiteOr(gm.emissiveFactor[2], 0)} *
                    strength;
-    m.emissiveTexture = textures.ref(gm.emissiveTexture.index, gm.emissiveTexture.texCoord, true, m.name);
+    m.emissiveTexture = slot(gm.emissiveTexture, true, "emissiveTexture");
     if (gm.occlusionTexture.index >= 0)
       ctx.warnings.warn("occlusion textures are ignored (the path tracer computes occlusion itself)");
     if (gm.alphaMode == "MASK") {
       m.alphaMode = AlphaMode::Mask;
     } else if (gm.alphaMode == "BLEND") {
       m.alphaMode = AlphaMode::Blend;
-      ctx.warnings.warn("alphaMode BLEND is rendered as MASK with alphaCutoff 0.5");
     } else if (gm.alphaMode != "OPAQUE") {
       ctx.warnings.warn("material '" + m.name + "': unknown alphaMode '" + gm.alphaMode + "', using OPAQUE");
     }

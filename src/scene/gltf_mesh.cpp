@@ -1,10 +1,13 @@
 #include "scene/gltf_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <string>
 
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_values.h"
 
 namespace lensrt::gltf {
 namespace {
@@ -38,16 +41,35 @@ const char* modeName(int mode) {
 // Warns about vertex attributes that change the look but are not rendered.
 void warnIgnoredAttributes(const Context& ctx, const tinygltf::Primitive& prim) {
   for (const auto& [name, accessor] : prim.attributes) {
-    if (name.rfind("TEXCOORD_", 0) == 0 && name != "TEXCOORD_0")
-      ctx.warnings.warn("extra UV sets (TEXCOORD_1 and up) are ignored");
-    else if (name.rfind("COLOR_", 0) == 0)
-      ctx.warnings.warn("vertex colours (COLOR_n) are ignored");
+    if (name.rfind("TEXCOORD_", 0) == 0 && name != "TEXCOORD_0" && name != "TEXCOORD_1")
+      ctx.warnings.warn("extra UV sets (TEXCOORD_2 and up) are ignored");
+    else if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
+      ctx.warnings.warn("vertex colours beyond COLOR_0 are ignored");
     else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
       ctx.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
   }
   if (!prim.targets.empty()) ctx.warnings.warn("morph targets are not supported: meshes render without them");
   for (const auto& [name, value] : prim.extensions)
     if (!isSupportedExtension(name)) ctx.warnUnsupportedExtension(name);
+}
+
+// A material slot reading TEXCOORD_1 on a primitive without one reads (0, 0).
+void warnMissingUvSet(const Context& ctx, const tinygltf::Primitive& prim, const std::string& label) {
+  if (prim.material < 0 || prim.attributes.count("TEXCOORD_1")) return;
+  const tinygltf::Material& m = ctx.model.materials[static_cast<std::size_t>(prim.material)];
+  const auto reads1 = [](const auto& info) {
+    int texCoord = info.texCoord;
+    const auto ext = info.extensions.find("KHR_texture_transform");
+    if (ext != info.extensions.end())
+      if (const std::optional<double> t = numberMember(ext->second, "texCoord"); t && isIndex(*t))
+        texCoord = static_cast<int>(*t);
+    return info.index >= 0 && texCoord == 1;
+  };
+  if (reads1(m.pbrMetallicRoughness.baseColorTexture) ||
+      reads1(m.pbrMetallicRoughness.metallicRoughnessTexture) || reads1(m.normalTexture) ||
+      reads1(m.emissiveTexture))
+    ctx.warnings.warn(label +
+                      ": its material reads TEXCOORD_1, which the primitive does not have; using (0, 0)");
 }
 
 // Triangle k of a strip or fan as the glTF spec orders its vertices (keeps
@@ -58,6 +80,22 @@ std::array<std::uint32_t, 3> stripTriangle(const std::vector<std::uint32_t>& v, 
 }
 std::array<std::uint32_t, 3> fanTriangle(const std::vector<std::uint32_t>& v, std::size_t k) {
   return {v[k + 1], v[k + 2], v[0]};
+}
+
+// COLOR_0 as the spec allows it: VEC3 or VEC4 of floats or normalized
+// unsigned bytes or shorts; anything else is ignored with a warning (nullopt).
+std::optional<int> colourComponents(const Context& ctx, int index, const std::string& label) {
+  if (index < 0 || static_cast<std::size_t>(index) >= ctx.model.accessors.size())
+    return 4;  // readFloats reports it
+  const tinygltf::Accessor& a = ctx.model.accessors[static_cast<std::size_t>(index)];
+  const bool vec = a.type == TINYGLTF_TYPE_VEC3 || a.type == TINYGLTF_TYPE_VEC4;
+  const bool component = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                         (a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                           a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
+  if (vec && component) return a.type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+  ctx.warnings.warn(
+      label + ": COLOR_0 is not a VEC3 or VEC4 of floats or normalized unsigned bytes or shorts; ignored");
+  return std::nullopt;
 }
 
 bool degenerate(const std::vector<Vec3f>& p, const std::array<std::uint32_t, 3>& t) {
@@ -119,6 +157,20 @@ std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& m
     mesh.normals = group<Vec3f, 3>(optional("NORMAL", 3));
     mesh.tangents = group<Vec4f, 4>(optional("TANGENT", 4));
     mesh.uvs = group<Vec2f, 2>(optional("TEXCOORD_0", 2));
+    mesh.uvs1 = group<Vec2f, 2>(optional("TEXCOORD_1", 2));
+    if (const auto colour = prim.attributes.find("COLOR_0"); colour != prim.attributes.end()) {
+      if (const std::optional<int> c = colourComponents(ctx, colour->second, label)) {
+        // Float colours are meant to lie in [0, 1]; NaN would poison every path through the surface.
+        std::vector<float> v = optional("COLOR_0", *c);
+        for (float& x : v) x = std::isnan(x) ? 1.0f : std::clamp(x, 0.0f, 1.0f);
+        if (*c == 4) {
+          mesh.colors = group<Vec4f, 4>(v);
+        } else {
+          for (const Vec3f& rgb : group<Vec3f, 3>(v)) mesh.colors.push_back({rgb.x, rgb.y, rgb.z, 1});
+        }
+      }
+    }
+    warnMissingUvSet(ctx, prim, label);
 
     std::vector<std::uint32_t> vertices;
     if (prim.indices >= 0) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -66,31 +67,72 @@ void recordError(void* user, RTCError code, const char* str) {
 // Everything the alpha filter needs, reachable from Embree's geometry user pointer.
 struct AlphaMask {
   const Mesh* mesh = nullptr;
-  Vec4f baseColor;
+  float alphaFactor = 1.0f;
   const Texture* texture = nullptr;
+  TextureRef ref;  // the base colour slot: UV set and KHR_texture_transform
   float cutoff = 0.5f;
+  bool blend = false;
 
-  bool opaqueAt(unsigned prim, float u, float v) const {
-    float alpha = baseColor.w;
-    if (texture && !mesh->uvs.empty()) {
-      const std::uint32_t* idx = &mesh->indices[3 * static_cast<std::size_t>(prim)];
-      const Vec2f uv = mesh->uvs[idx[0]] * (1 - u - v) + mesh->uvs[idx[1]] * u + mesh->uvs[idx[2]] * v;
-      alpha *= sampleTexture(*texture, uv).w;
-    } else if (texture) {
-      alpha *= sampleTexture(*texture, Vec2f{0, 0}).w;
-    }
-    return alpha >= cutoff;
+  float alphaAt(unsigned prim, float u, float v) const {
+    float alpha = alphaFactor;
+    const std::uint32_t* idx = &mesh->indices[3 * static_cast<std::size_t>(prim)];
+    const float w = 1 - u - v;
+    const auto interp = [&](const std::vector<Vec2f>& a) {
+      return a.empty() ? Vec2f{0, 0} : a[idx[0]] * w + a[idx[1]] * u + a[idx[2]] * v;
+    };
+    if (texture) alpha *= sampleTexture(*texture, ref.uv(interp(mesh->uvs), interp(mesh->uvs1))).w;
+    if (!mesh->colors.empty())
+      alpha *= mesh->colors[idx[0]].w * w + mesh->colors[idx[1]].w * u + mesh->colors[idx[2]].w * v;
+    return alpha;
   }
 };
+
+// Embree hands the context of a query to the filter: this one carries the key
+// of the world ray that stochastic transparency hashes.
+struct QueryContext {
+  RTCIntersectContext embree;  // first member: Embree sees a plain context
+  std::uint64_t rayKey = 0;
+};
+
+std::uint64_t mix64(std::uint64_t x) {  // splitmix64's finaliser
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ull;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+std::uint64_t rayKey(const Ray& ray) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull;
+  for (const float f : {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
+                        ray.direction.z, ray.tMin}) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &f, sizeof bits);
+    h = mix64(h ^ bits);
+  }
+  return h;
+}
+
+// A uniform number in [0, 1) for one ray meeting one triangle of one placement.
+float transparencyDraw(std::uint64_t key, unsigned geomID, unsigned instID, unsigned prim) {
+  const std::uint64_t h = mix64(
+      key ^ mix64((std::uint64_t{geomID} << 32 | instID) ^ (std::uint64_t{prim} * 0x9e3779b97f4a7c15ull)));
+  return static_cast<float>(h >> 40) * 0x1.0p-24f;
+}
 
 // Shared by intersection and occlusion: rejecting a candidate makes Embree go on.
 void alphaFilter(const RTCFilterFunctionNArguments* args) {
   const auto* mask = static_cast<const AlphaMask*>(args->geometryUserPtr);
+  const auto* context = reinterpret_cast<const QueryContext*>(args->context);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
     const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
-    if (!mask->opaqueAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
-      args->valid[i] = 0;
+    const float alpha =
+        mask->alphaAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+    const bool opaque = mask->blend ? transparencyDraw(context->rayKey, RTCHitN_geomID(args->hit, args->N, i),
+                                                       RTCHitN_instID(args->hit, args->N, i, 0), prim) < alpha
+                                    : alpha >= mask->cutoff;
+    if (!opaque) args->valid[i] = 0;
   }
 }
 
@@ -144,6 +186,10 @@ void RenderScene::Impl::validate() const {
       throw InputError(desc.sourceFile, label + "tangent count differs from position count");
     if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
       throw InputError(desc.sourceFile, label + "uv count differs from position count");
+    if (!m.uvs1.empty() && m.uvs1.size() != m.positions.size())
+      throw InputError(desc.sourceFile, label + "TEXCOORD_1 count differs from position count");
+    if (!m.colors.empty() && m.colors.size() != m.positions.size())
+      throw InputError(desc.sourceFile, label + "colour count differs from position count");
     if (m.material < -1 || m.material >= static_cast<int>(desc.materials.size()))
       throw InputError(desc.sourceFile, label + "material index out of range");
   }
@@ -166,9 +212,11 @@ void RenderScene::Impl::buildMasks() {
     if (mat.alphaMode == AlphaMode::Opaque) continue;
     AlphaMask& mask = masks[i];
     mask.mesh = &m;
-    mask.baseColor = mat.baseColor;
+    mask.alphaFactor = mat.baseColor.w;
     mask.texture = mat.baseColorTexture.valid() ? &desc.textures[mat.baseColorTexture.texture] : nullptr;
-    mask.cutoff = mat.alphaMode == AlphaMode::Blend ? 0.5f : mat.alphaCutoff;
+    mask.ref = mat.baseColorTexture;
+    mask.cutoff = mat.alphaCutoff;
+    mask.blend = mat.alphaMode == AlphaMode::Blend;
   }
 }
 
@@ -324,6 +372,12 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
     }
   }
   if (!m.uvs.empty()) hit.uv = m.uvs[idx[0]] * w + m.uvs[idx[1]] * u + m.uvs[idx[2]] * v;
+  if (!m.uvs1.empty()) hit.uv1 = m.uvs1[idx[0]] * w + m.uvs1[idx[1]] * u + m.uvs1[idx[2]] * v;
+  if (!m.colors.empty()) {
+    const Vec4f &c0 = m.colors[idx[0]], &c1 = m.colors[idx[1]], &c2 = m.colors[idx[2]];
+    hit.color = {c0.x * w + c1.x * u + c2.x * v, c0.y * w + c1.y * u + c2.y * v,
+                 c0.z * w + c1.z * u + c2.z * v, c0.w * w + c1.w * u + c2.w * v};
+  }
   return hit;
 }
 
@@ -335,8 +389,9 @@ RenderScene::RenderScene(SceneDesc desc) : impl_(std::make_unique<Impl>()) {
 RenderScene::~RenderScene() = default;
 
 std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  QueryContext context;
+  rtcInitIntersectContext(&context.embree);
+  context.rayKey = rayKey(ray);
   RTCRayHit rh{};
   rh.ray.org_x = ray.origin.x;
   rh.ray.org_y = ray.origin.y;
@@ -349,7 +404,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
   rh.ray.mask = 0xFFFFFFFFu;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->top.get(), &context, &rh);
+  rtcIntersect1(impl_->top.get(), &context.embree, &rh);
   // Embree's float arithmetic can overflow on extreme geometry (fuzz_gltf: a
   // hit at t = inf through an instance): a hit that is not finite is no hit.
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !std::isfinite(rh.ray.tfar)) return std::nullopt;
@@ -362,8 +417,9 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
 }
 
 bool RenderScene::occluded(const Ray& ray) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  QueryContext context;
+  rtcInitIntersectContext(&context.embree);
+  context.rayKey = rayKey(ray);
   RTCRay r{};
   r.org_x = ray.origin.x;
   r.org_y = ray.origin.y;
@@ -374,7 +430,7 @@ bool RenderScene::occluded(const Ray& ray) const {
   r.tnear = ray.tMin;
   r.tfar = ray.tMax;
   r.mask = 0xFFFFFFFFu;
-  rtcOccluded1(impl_->top.get(), &context, &r);
+  rtcOccluded1(impl_->top.get(), &context.embree, &r);
   return r.tfar == -kInfinityF;  // Embree marks a blocked ray this way
 }
 

@@ -11,10 +11,12 @@
 
 namespace lensrt {
 
-// Alpha: materials with AlphaMode::Mask are cut out where baseColor alpha
-// (factor * texture) < alphaCutoff. AlphaMode::Blend is treated as Mask with a
-// cutoff of 0.5 (the loader warns once), since the path tracer has no ordered
-// transparency.
+// Alpha: a material's alpha is baseColor factor * texture alpha * COLOR_0 alpha.
+// AlphaMode::Mask cuts the surface out where alpha < alphaCutoff.
+// AlphaMode::Blend is stochastic transparency: each ray passes through with
+// probability 1 - alpha, decided by a hash of the world ray and the triangle,
+// so the same ray always gets the same answer (renders stay bit-identical for
+// a seed) and shadow rays see the same statistics as camera and bounce rays.
 
 // Geometry at a ray hit, in world space. Material evaluation (textures, normal
 // maps, BSDF) is the renderer's job; this is only what the geometry says.
@@ -26,6 +28,8 @@ struct SurfaceHit {
                               // geometricNormal
   Vec4f tangent{0, 0, 0, 0};  // world xyz unit + handedness w; zero when the mesh has none
   Vec2f uv;                   // TEXCOORD_0, zero when absent
+  Vec2f uv1;                  // TEXCOORD_1, zero when absent
+  Vec4f color{1, 1, 1, 1};    // COLOR_0 (linear RGBA), white when absent
   int material = -1;          // index into SceneDesc::materials, -1: default material
   int instance = -1;          // index into SceneDesc::instances
   unsigned primitive = 0;     // triangle index within the instance's mesh

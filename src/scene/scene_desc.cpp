@@ -1,6 +1,22 @@
 #include "scene/scene_desc.h"
 
+#include <cmath>
+
 namespace lensrt {
+
+// The extension's matrices: T = [1 0 ox; 0 1 oy], R = [cos sin; -sin cos],
+// S = diag(sx, sy); uv' = T * R * S * uv (scale first, then rotate, then offset).
+UvTransform UvTransform::fromOffsetRotationScale(Vec2f offset, float rotation, Vec2f scale) {
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  UvTransform t;
+  t.m[0] = c * scale.x;
+  t.m[1] = s * scale.y;
+  t.m[2] = offset.x;
+  t.m[3] = -s * scale.x;
+  t.m[4] = c * scale.y;
+  t.m[5] = offset.y;
+  return t;
+}
 
 Bounds3f SceneDesc::worldBounds() const {
   std::vector<Bounds3f> meshBounds(meshes.size());

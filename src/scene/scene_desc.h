@@ -21,15 +21,26 @@ struct Texture {
   std::vector<Vec4f> texels;  // row-major, row 0 is the top of the image (glTF uv (0,0))
   bool wrapRepeatS = true;    // false: clamp to edge
   bool wrapRepeatT = true;
-  bool nearest = false;  // glTF magFilter NEAREST; otherwise bilinear
+  bool nearest = false;  // glTF magFilter NEAREST (or minFilter NEAREST* without one); else bilinear
   bool mirrorS = false;  // glTF MIRRORED_REPEAT (only meaningful with wrapRepeatS)
   bool mirrorT = false;
 };
 
+// KHR_texture_transform as the 2x3 matrix T * R * S the extension defines:
+// uv' = (m[0] u + m[1] v + m[2], m[3] u + m[4] v + m[5]).
+struct UvTransform {
+  float m[6] = {1, 0, 0, 0, 1, 0};
+  static UvTransform fromOffsetRotationScale(Vec2f offset, float rotation, Vec2f scale);
+  Vec2f apply(Vec2f uv) const { return {m[0] * uv.x + m[1] * uv.y + m[2], m[3] * uv.x + m[4] * uv.y + m[5]}; }
+};
+
 struct TextureRef {
   int texture = -1;  // index into SceneDesc::textures, -1: none
-  int texCoord = 0;  // which UV set (only 0 is loaded; others warn)
+  int texCoord = 0;  // which UV set: 0 = TEXCOORD_0, 1 = TEXCOORD_1
+  UvTransform transform;
   bool valid() const { return texture >= 0; }
+  // The texture coordinate this slot reads at a point with the given UV sets.
+  Vec2f uv(Vec2f uv0, Vec2f uv1) const { return transform.apply(texCoord == 1 ? uv1 : uv0); }
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };
@@ -59,6 +70,8 @@ struct Mesh {
   std::vector<Vec3f> normals;          // empty or one per position
   std::vector<Vec4f> tangents;         // empty or one per position (w = handedness)
   std::vector<Vec2f> uvs;              // empty or one per position (TEXCOORD_0)
+  std::vector<Vec2f> uvs1;             // empty or one per position (TEXCOORD_1)
+  std::vector<Vec4f> colors;           // empty or one per position (COLOR_0, linear RGBA)
   std::vector<std::uint32_t> indices;  // 3 per triangle
   int material = -1;                   // -1: the glTF default material
   std::size_t triangleCount() const { return indices.size() / 3; }

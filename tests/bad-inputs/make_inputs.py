@@ -197,3 +197,30 @@ write("instancing-accessor-not-an-index.gltf", d)
 d = copy.deepcopy(good)  # found by fuzz_gltf: no inverse, an uncaught exception
 d["nodes"][0]["matrix"] = [1, 0, 0, 1, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 0]
 write("projective-matrix.gltf", d)
+
+d = copy.deepcopy(good)
+d["asset"] = {"version": "3.0", "minVersion": "3.0"}
+write("gltf-min-version-3.gltf", d)
+
+write("camera-no-meshes.gltf", {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+                                "cameras": [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}],
+                                "nodes": [{"name": "flat field", "camera": 0}]})
+
+d = textured({"uri": "data:image/png;base64," + PNG_2x1})
+d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 1
+write("texcoord-1-missing.gltf", d)
+
+d = textured({"uri": "data:image/png;base64," + PNG_2x1})
+d["extensionsUsed"] = ["KHR_texture_transform"]
+d["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+    "KHR_texture_transform": {"offset": [0.5], "rotation": "quarter", "scale": [2, 2]}}
+write("texture-transform-malformed.gltf", d)
+
+d = textured({"uri": "data:image/png;base64," + PNG_2x1})
+d["samplers"] = [{"wrapS": 12345, "magFilter": 1}]
+d["textures"][0]["sampler"] = 0
+write("sampler-invalid-modes.gltf", d)
+
+d = textured({"uri": "data:image/png;base64," + PNG_2x1})
+d["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 1  # the SCALAR index accessor
+write("color-wrong-type.gltf", d)

@@ -39,6 +39,9 @@ void checkHit(const std::optional<SurfaceHit>& hit) {
   LENSRT_FUZZ_CHECK(std::isfinite(hit->t) && isFinite(hit->position));
   LENSRT_FUZZ_CHECK(isFinite(hit->geometricNormal) && isFinite(hit->shadingNormal));
   LENSRT_FUZZ_CHECK(std::abs(length(hit->shadingNormal) - 1.0f) < 1e-3f);
+  // COLOR_0 is clamped to [0, 1] on loading; interpolation keeps it there.
+  for (const float c : {hit->color.x, hit->color.y, hit->color.z, hit->color.w})
+    LENSRT_FUZZ_CHECK(c >= 0.0f && c <= 1.0f + 1e-5f);
 }
 
 void exercise(const std::filesystem::path& file) {

@@ -74,10 +74,60 @@ TEST(MaterialEval, EmissionIsFrontFacingUnlessDoubleSided) {
   SceneDesc scene = normalMappedQuad({0, 0, 1}, true);
   scene.materials[0].emissive = {2, 3, 4};
   const MaterialTable materials(scene);
-  EXPECT_EQ(emittedRadiance(materials, 0, {0.5f, 0.5f}, 0.5f), Rgb(2, 3, 4));
-  EXPECT_EQ(emittedRadiance(materials, 0, {0.5f, 0.5f}, -0.5f), Rgb(0, 0, 0));
+  EXPECT_EQ(emittedRadiance(materials, 0, {0.5f, 0.5f}, {0.5f, 0.5f}, 0.5f), Rgb(2, 3, 4));
+  EXPECT_EQ(emittedRadiance(materials, 0, {0.5f, 0.5f}, {0.5f, 0.5f}, -0.5f), Rgb(0, 0, 0));
   scene.materials[0].doubleSided = true;
-  EXPECT_EQ(emittedRadiance(MaterialTable(scene), 0, {0.5f, 0.5f}, -0.5f), Rgb(2, 3, 4));
+  EXPECT_EQ(emittedRadiance(MaterialTable(scene), 0, {0.5f, 0.5f}, {0.5f, 0.5f}, -0.5f), Rgb(2, 3, 4));
+}
+
+}  // namespace
+}  // namespace lensrt
+
+namespace lensrt {
+namespace {
+
+// 2x1 nearest texture: texel 0 red 0.2, texel 1 red 0.8 (u < 0.5 and u > 0.5).
+SceneDesc twoTexelBaseColour(const TextureRef& ref) {
+  SceneDesc s = normalMappedQuad({0, 0, 1}, true);
+  Texture t;
+  t.width = 2;
+  t.height = 1;
+  t.nearest = true;
+  t.texels = {{0.2f, 1, 1, 1}, {0.8f, 1, 1, 1}};
+  s.textures.push_back(t);
+  s.materials[0].normalTexture = {};
+  s.materials[0].baseColor = {1, 1, 1, 1};
+  s.materials[0].baseColorTexture = ref;
+  s.materials[0].baseColorTexture.texture = 1;
+  return s;
+}
+
+TEST(MaterialEval, VertexColourMultipliesTheBaseColour) {
+  SceneDesc scene = normalMappedQuad({0, 0, 1}, true);
+  const MaterialTable materials(scene);
+  SurfaceHit hit = hitOnQuad({1, 0, 0, 1});
+  hit.color = {0.5f, 0.5f, 0.25f, 1};
+  const ShadingPoint sp = evaluateMaterial(materials, hit, {0, 1, 0});
+  // factor (0.5, 0.25, 1) times COLOR_0 (0.5, 0.5, 0.25).
+  EXPECT_FLOAT_EQ(sp.bsdf.baseColor.x, 0.25f);
+  EXPECT_FLOAT_EQ(sp.bsdf.baseColor.y, 0.125f);
+  EXPECT_FLOAT_EQ(sp.bsdf.baseColor.z, 0.25f);
+}
+
+TEST(MaterialEval, TextureSlotsReadTheirUvSetThroughTheirTransform) {
+  SurfaceHit hit = hitOnQuad({1, 0, 0, 1});
+  hit.uv = {0.25f, 0.5f};
+  hit.uv1 = {0.75f, 0.5f};
+  TextureRef ref;
+  EXPECT_FLOAT_EQ(evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.baseColor.x,
+                  0.2f);
+  ref.texCoord = 1;
+  EXPECT_FLOAT_EQ(evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.baseColor.x,
+                  0.8f);
+  // Offset -0.5 on TEXCOORD_1: u = 0.25, texel 0.
+  ref.transform = UvTransform::fromOffsetRotationScale({-0.5f, 0}, 0, {1, 1});
+  EXPECT_FLOAT_EQ(evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.baseColor.x,
+                  0.2f);
 }
 
 }  // namespace

@@ -121,6 +121,38 @@ TEST(GltfErrors, NoMeshes) {
   EXPECT_EQ(errorOf(b), "nothing to render: the file has no meshes");
 }
 
+TEST(GltfErrors, CameraWithoutMeshesRendersTheEnvironment) {
+  GltfBuilder b;
+  b.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}};
+  b.node({{"name", "flat field"}, {"camera", 0}});
+  Warnings w;
+  const SceneDesc d = loadGltf(test::writeFile(test::testDir() / "sky.gltf", b.json()), -1, w);
+  EXPECT_TRUE(d.instances.empty());
+  EXPECT_EQ(d.cameras.size(), 1u);
+  EXPECT_EQ(w.all(), (std::set<std::string>{"the scene has no meshes: rendering the environment only"}));
+}
+
+TEST(GltfErrors, AssetVersionMustBeTwo) {
+  const auto withAsset = [](const nlohmann::json& asset) {
+    GltfBuilder b = validSquare();
+    b.doc["asset"] = asset;
+    return b;
+  };
+  EXPECT_EQ(errorOf(withAsset({{"version", "1.0"}})),
+            "glTF version 1.0 is not supported (lensrt reads glTF 2.x)");
+  EXPECT_EQ(errorOf(withAsset({{"version", "3.0"}})),
+            "glTF version 3.0 is not supported (lensrt reads glTF 2.x)");
+  EXPECT_EQ(errorOf(withAsset({{"version", "two"}})),
+            "asset.version 'two' is not a glTF version (major.minor)");
+  EXPECT_EQ(errorOf(withAsset({{"version", "3.0"}, {"minVersion", "2.1"}})),
+            "glTF minVersion 2.1 is not supported (lensrt reads glTF 2.0)");
+  // Readable as 2.0: a later 2.x, or any version whose minVersion is at most 2.0.
+  for (const nlohmann::json& ok : {nlohmann::json{{"version", "2.0"}}, nlohmann::json{{"version", "2.7"}},
+                                   nlohmann::json{{"version", "3.0"}, {"minVersion", "2.0"}},
+                                   nlohmann::json{{"version", "2.1"}, {"minVersion", "1.0"}}})
+    EXPECT_EQ(errorOf(withAsset(ok)), "") << ok.dump();
+}
+
 TEST(GltfErrors, DegenerateTrianglesOnly) {
   GltfBuilder b;
   const int pos = b.floats({0, 0, 0, 1, 1, 1, 2, 2, 2, 5, 5, 5}, "VEC3");  // collinear

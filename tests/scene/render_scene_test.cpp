@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <thread>
+#include <utility>
 
 #include "core/error.h"
 
@@ -221,11 +222,52 @@ TEST(RenderScene, AlphaCutoffComparesAgainstTexelAlpha) {
   EXPECT_EQ(scene.intersect(down(-0.5f, 0))->instance, 0);
 }
 
-TEST(RenderScene, BlendIsMaskAtOneHalf) {
-  const RenderScene below(maskedQuadOverFloor(AlphaMode::Blend, 0.9f, 0.45f));
-  EXPECT_EQ(below.intersect(down(-0.5f, 0))->instance, 1);
-  const RenderScene above(maskedQuadOverFloor(AlphaMode::Blend, 0.9f, 0.55f));
-  EXPECT_EQ(above.intersect(down(-0.5f, 0))->instance, 0);
+// Fraction of n distinct rays down through the left (alpha = leftAlpha) half
+// of a BLEND quad that reach the floor, by intersection and by occlusion.
+std::pair<double, double> blendTransmission(const RenderScene& scene, int n) {
+  int through = 0, unblocked = 0;
+  for (int i = 0; i < n; ++i) {
+    // Distinct rays spread over the transparent half, away from its edges.
+    const float x = -0.9f + 0.8f * static_cast<float>(i % 64) / 64.0f;
+    const float y = -0.9f + 1.8f * static_cast<float>(i / 64) / static_cast<float>(n / 64);
+    const auto hit = scene.intersect(down(x, y));
+    if (hit && hit->instance == 1) ++through;
+    Ray shadow = down(x, y);
+    shadow.tMax = 4.5f;  // from above the quad to between quad and floor
+    if (!scene.occluded(shadow)) ++unblocked;
+  }
+  return {double(through) / n, double(unblocked) / n};
+}
+
+TEST(RenderScene, BlendLetsOneMinusAlphaOfTheRaysThrough) {
+  constexpr int kN = 8192;  // binomial sigma at p = 0.75: 0.0048
+  for (const float alpha : {0.25f, 0.6f}) {
+    const RenderScene scene(maskedQuadOverFloor(AlphaMode::Blend, 0.5f, alpha));
+    const auto [through, unblocked] = blendTransmission(scene, kN);
+    EXPECT_NEAR(through, 1 - alpha, 0.025) << alpha;
+    EXPECT_NEAR(unblocked, 1 - alpha, 0.025) << alpha;
+  }
+  // The opaque half stays opaque, and the alpha cutoff plays no part.
+  const RenderScene scene(maskedQuadOverFloor(AlphaMode::Blend, 0.9f, 0.25f));
+  EXPECT_EQ(scene.intersect(down(0.5f, 0.3f))->instance, 0);
+}
+
+TEST(RenderScene, BlendDecisionIsAFunctionOfTheRay) {
+  const RenderScene scene(maskedQuadOverFloor(AlphaMode::Blend, 0.5f, 0.5f));
+  int differ = 0;
+  for (int i = 0; i < 256; ++i) {
+    const Ray r = down(-0.9f + 0.003f * static_cast<float>(i), 0.2f);
+    const bool first = scene.intersect(r)->instance == 1;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(scene.intersect(r)->instance == 1, first);
+      Ray shadow = r;
+      shadow.tMax = 4.5f;
+      EXPECT_EQ(!scene.occluded(shadow), first);  // the same ray (up to its end) meets the same surface
+    }
+    differ +=
+        first != (scene.intersect(down(-0.9f + 0.003f * static_cast<float>(i), 0.2001f))->instance == 1);
+  }
+  EXPECT_GT(differ, 64);  // neighbouring rays decide independently (about half of them differ)
 }
 
 TEST(RenderScene, OpaqueModeIgnoresAlpha) {

@@ -1,0 +1,52 @@
+// alphaMode BLEND as stochastic transparency, through the whole renderer: a
+// surface of alpha a in front of an emitter lets 1 - a of its light through.
+#include <gtest/gtest.h>
+
+#include "camera/pinhole_camera.h"
+#include "render/test_scene_util.h"
+
+namespace lensrt {
+namespace {
+
+// A uniform emitter of radiance 1 filling the view, seen from above through
+// (optionally) a black BLEND sheet of the given alpha.
+SceneDesc emitterBehindSheet(bool sheet, float alpha) {
+  SceneDesc s;
+  s.sourceFile = "blend (in code)";
+  s.meshes.push_back(test::makeQuadY(0, 40));
+  s.meshes[0].material = 0;
+  s.instances.push_back({0, Transform()});
+  s.materials.push_back(test::whiteMatte());
+  s.materials[0].baseColor = {0, 0, 0, 1};
+  s.materials[0].emissive = {1, 1, 1};
+  if (sheet) {
+    s.meshes.push_back(test::makeQuadY(1, 40));
+    s.meshes[1].material = 1;
+    s.instances.push_back({1, Transform()});
+    Material black = test::whiteMatte(true);
+    black.baseColor = {0, 0, 0, alpha};
+    black.alphaMode = AlphaMode::Blend;
+    s.materials.push_back(black);
+  }
+  return s;
+}
+
+TEST(AlphaBlend, SheetOfAlphaAQuarterTransmitsThreeQuarters) {
+  const PinholeCamera camera(Transform::lookAt({0, 3, 0}, {0, 0, 0}, {0, 0, -1}), {24, 24, 36, 36}, 0.5);
+  test::TestRenderSetup setup;  // black environment: only the emitter lights anything
+  setup.render.samplesPerPixel = 16;
+  setup.render.threads = 2;
+  const double open =
+      test::channelMean(test::renderTestScene(emitterBehindSheet(false, 1), camera, setup), "G");
+  const double behind =
+      test::channelMean(test::renderTestScene(emitterBehindSheet(true, 0.25f), camera, setup), "G");
+  ASSERT_GT(open, 0.1);
+  // 9216 camera paths, each through with probability 0.75: sigma 0.0045.
+  EXPECT_NEAR(behind / open, 0.75, 0.02);
+  const double opaque =
+      test::channelMean(test::renderTestScene(emitterBehindSheet(true, 1), camera, setup), "G");
+  EXPECT_EQ(opaque, 0.0);  // alpha 1 blocks every path (a black sheet reflects nothing)
+}
+
+}  // namespace
+}  // namespace lensrt
