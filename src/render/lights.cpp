@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/constants.h"
+#include "scene/surface_alpha.h"
 
 namespace lensrt {
 
@@ -74,6 +75,8 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
         tri.uv2 = uvs[i2];
       }
       tri.material = mesh.material;
+      tri.mesh = inst.mesh;
+      tri.prim = static_cast<unsigned>(t);
       triangles_.push_back(tri);
       power.push_back(std::isfinite(tri.area) ? kPiF * tri.area * le : 0.0f);
     }
@@ -114,8 +117,13 @@ std::optional<LightSample> LightSet::sampleTriangle(const Triangle& t, const Vec
   const Vec3f wi = d / dist;
   const float cosLight = -dot(wi, t.normal);  // > 0 when p sees the front
   const Vec2f uv = t.uv0 * (1 - b1 - b2) + t.uv1 * b1 + t.uv2 * b2;
+  // uvs hold the emissive slot's set. An alpha-masked or blended emitter is
+  // there only where (MASK) or as often as (BLEND) its alpha says, as a
+  // BSDF ray hitting it finds.
+  const SceneDesc& scene = materials_->scene();
   const Rgb le =
-      emittedRadiance(*materials_, t.material, uv, uv, cosLight);  // uvs hold the emissive slot's set
+      emittedRadiance(*materials_, t.material, uv, uv, cosLight) *
+      surfaceCoverage(scene, scene.meshes[t.mesh], materials_->material(t.material), t.prim, b1, b2);
   if (!(maxComponent(le) > 0) || std::abs(cosLight) < 1e-7f) return std::nullopt;
   return LightSample{wi, dist, le, dist2 / (std::abs(cosLight) * t.area), false};
 }

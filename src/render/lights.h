@@ -46,6 +46,8 @@ class LightSet {
     Vec2f uv0, uv1, uv2;
     float area;
     int material;
+    int mesh;  // for the coverage of MASK and BLEND emitters
+    unsigned prim;
   };
   std::optional<LightSample> sampleTriangle(const Triangle& t, const Vec3f& p, const Vec2f& u) const;
   std::optional<LightSample> samplePunctual(const PunctualLight& l, const Vec3f& p) const;

@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "scene/embree_handles.h"
-#include "scene/texture_sampling.h"
+#include "scene/surface_alpha.h"
 
 namespace lensrt {
 namespace {
@@ -66,24 +66,12 @@ void recordError(void* user, RTCError code, const char* str) {
 
 // Everything the alpha filter needs, reachable from Embree's geometry user pointer.
 struct AlphaMask {
+  const SceneDesc* scene = nullptr;
   const Mesh* mesh = nullptr;
-  float alphaFactor = 1.0f;
-  const Texture* texture = nullptr;
-  TextureRef ref;  // the base colour slot: UV set and KHR_texture_transform
-  float cutoff = 0.5f;
-  bool blend = false;
+  const Material* material = nullptr;
 
   float alphaAt(unsigned prim, float u, float v) const {
-    float alpha = alphaFactor;
-    const std::uint32_t* idx = &mesh->indices[3 * static_cast<std::size_t>(prim)];
-    const float w = 1 - u - v;
-    const auto interp = [&](const std::vector<Vec2f>& a) {
-      return a.empty() ? Vec2f{0, 0} : a[idx[0]] * w + a[idx[1]] * u + a[idx[2]] * v;
-    };
-    if (texture) alpha *= sampleTexture(*texture, ref.uv(interp(mesh->uvs), interp(mesh->uvs1))).w;
-    if (!mesh->colors.empty())
-      alpha *= mesh->colors[idx[0]].w * w + mesh->colors[idx[1]].w * u + mesh->colors[idx[2]].w * v;
-    return alpha;
+    return surfaceAlpha(*scene, *mesh, *material, prim, u, v);
   }
 };
 
@@ -129,9 +117,10 @@ void alphaFilter(const RTCFilterFunctionNArguments* args) {
     const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
     const float alpha =
         mask->alphaAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-    const bool opaque = mask->blend ? transparencyDraw(context->rayKey, RTCHitN_geomID(args->hit, args->N, i),
-                                                       RTCHitN_instID(args->hit, args->N, i, 0), prim) < alpha
-                                    : alpha >= mask->cutoff;
+    const bool opaque = mask->material->alphaMode == AlphaMode::Blend
+                            ? transparencyDraw(context->rayKey, RTCHitN_geomID(args->hit, args->N, i),
+                                               RTCHitN_instID(args->hit, args->N, i, 0), prim) < alpha
+                            : alpha >= mask->material->alphaCutoff;
     if (!opaque) args->valid[i] = 0;
   }
 }
@@ -210,13 +199,7 @@ void RenderScene::Impl::buildMasks() {
     if (m.material < 0) continue;
     const Material& mat = desc.materials[m.material];
     if (mat.alphaMode == AlphaMode::Opaque) continue;
-    AlphaMask& mask = masks[i];
-    mask.mesh = &m;
-    mask.alphaFactor = mat.baseColor.w;
-    mask.texture = mat.baseColorTexture.valid() ? &desc.textures[mat.baseColorTexture.texture] : nullptr;
-    mask.ref = mat.baseColorTexture;
-    mask.cutoff = mat.alphaCutoff;
-    mask.blend = mat.alphaMode == AlphaMode::Blend;
+    masks[i] = {&desc, &m, &mat};
   }
 }
 

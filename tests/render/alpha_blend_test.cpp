@@ -48,5 +48,40 @@ TEST(AlphaBlend, SheetOfAlphaAQuarterTransmitsThreeQuarters) {
   EXPECT_EQ(opaque, 0.0);  // alpha 1 blocks every path (a black sheet reflects nothing)
 }
 
+// A white floor lit only by an emitter overhead (out of view) of the given
+// alpha mode and alpha: next-event estimation and BSDF sampling must both see
+// the emitter's coverage.
+SceneDesc floorUnderEmitter(AlphaMode mode, float alpha) {
+  SceneDesc s;
+  s.sourceFile = "blended emitter (in code)";
+  s.meshes.push_back(test::makeQuadY(0, 40));
+  s.meshes.push_back(test::makeRectFacingDown(1, 3, -1, 1, 2));
+  s.meshes[0].material = 0;
+  s.meshes[1].material = 1;
+  s.instances = {{0, Transform()}, {1, Transform()}};
+  s.materials = {test::whiteMatte(), test::whiteMatte()};
+  s.materials[1].baseColor = {0, 0, 0, alpha};
+  s.materials[1].emissive = {4, 4, 4};
+  s.materials[1].alphaMode = mode;
+  return s;
+}
+
+TEST(AlphaBlend, BlendedEmitterShinesWithItsCoverage) {
+  const PinholeCamera camera(Transform::lookAt({-1, 1, 0}, {-1, 0, 0}, {0, 0, -1}), {16, 16, 36, 36}, 0.4);
+  test::TestRenderSetup setup;
+  setup.render.samplesPerPixel = 64;
+  setup.render.threads = 2;
+  const double full =
+      test::channelMean(test::renderTestScene(floorUnderEmitter(AlphaMode::Opaque, 1), camera, setup), "G");
+  ASSERT_GT(full, 0.05);
+  const double quarter = test::channelMean(
+      test::renderTestScene(floorUnderEmitter(AlphaMode::Blend, 0.25f), camera, setup), "G");
+  EXPECT_NEAR(quarter / full, 0.25, 0.02);
+  // MASK below the cutoff: no emitter at all, by light sampling either.
+  const double masked =
+      test::channelMean(test::renderTestScene(floorUnderEmitter(AlphaMode::Mask, 0.25f), camera, setup), "G");
+  EXPECT_EQ(masked, 0.0);
+}
+
 }  // namespace
 }  // namespace lensrt
