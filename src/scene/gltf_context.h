@@ -24,11 +24,12 @@ struct Context {
 };
 
 // The extensions the loader implements (KHR_mesh_quantization needs nothing
-// beyond the accessor reader's integer formats).
+// beyond the accessor reader's integer formats; KHR_xmp and KHR_xmp_json_ld are
+// metadata that cannot change the picture).
 inline bool isSupportedExtension(std::string_view name) {
   return name == "KHR_lights_punctual" || name == "KHR_materials_emissive_strength" ||
          name == "EXT_mesh_gpu_instancing" || name == "KHR_mesh_quantization" ||
-         name == "KHR_texture_transform";
+         name == "KHR_texture_transform" || name == "KHR_xmp" || name == "KHR_xmp_json_ld";
 }
 
 }  // namespace lensrt::gltf

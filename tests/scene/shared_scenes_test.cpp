@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -61,6 +62,30 @@ TEST(SharedScenes, AllLoadAndBuild) {
       }
     EXPECT_GT(hits, 0);
   }
+}
+
+// The Khronos KHR_texture_transform conformance scene: loads without a
+// warning, and its rotation quad (22.5 degrees) carries the extension's R.
+TEST(SharedScenes, TextureTransformTestLoadsTheSpecsMatrices) {
+  const fs::path file =
+      fs::path(LENSRT_SHARED_DIR) / "scenes/TextureTransformTest/glTF/TextureTransformTest.gltf";
+  std::error_code ec;
+  if (!fs::exists(file, ec)) GTEST_SKIP() << file << " is absent";
+  Warnings warnings;
+  const SceneDesc desc = loadGltf(file, -1, warnings);
+  EXPECT_TRUE(warnings.all().empty());
+  const float c = std::cos(0.392699f), s = std::sin(0.392699f);
+  int rotated = 0;
+  for (const Material& m : desc.materials) {
+    const UvTransform& t = m.baseColorTexture.transform;
+    // The rotation-only quad: no offset, cos on the diagonal (the "all" quad scales too).
+    if (t.m[2] != 0 || t.m[5] != 0 || std::abs(t.m[0] - c) > 1e-5f) continue;
+    ++rotated;
+    EXPECT_NEAR(t.m[1], s, 1e-5f);
+    EXPECT_NEAR(t.m[3], -s, 1e-5f);
+    EXPECT_NEAR(t.m[4], c, 1e-5f);
+  }
+  EXPECT_EQ(rotated, 1);
 }
 
 }  // namespace
