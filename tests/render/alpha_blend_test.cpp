@@ -2,6 +2,8 @@
 // surface of alpha a in front of an emitter lets 1 - a of its light through.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "camera/pinhole_camera.h"
 #include "render/test_scene_util.h"
 
@@ -36,13 +38,26 @@ TEST(AlphaBlend, SheetOfAlphaAQuarterTransmitsThreeQuarters) {
   test::TestRenderSetup setup;  // black environment: only the emitter lights anything
   setup.render.samplesPerPixel = 16;
   setup.render.threads = 2;
-  const double open =
-      test::channelMean(test::renderTestScene(emitterBehindSheet(false, 1), camera, setup), "G");
-  const double behind =
-      test::channelMean(test::renderTestScene(emitterBehindSheet(true, 0.25f), camera, setup), "G");
+  const Image openImage = test::renderTestScene(emitterBehindSheet(false, 1), camera, setup);
+  const Image behindImage = test::renderTestScene(emitterBehindSheet(true, 0.25f), camera, setup);
+  const double open = test::channelMean(openImage, "G"), behind = test::channelMean(behindImage, "G");
   ASSERT_GT(open, 0.1);
   // 9216 camera paths, each through with probability 0.75: sigma 0.0045.
   EXPECT_NEAR(behind / open, 0.75, 0.02);
+  // Each of a pixel's 16 paths decides on its own: the per-pixel ratio is a
+  // binomial fraction with sigma sqrt(0.75 * 0.25 / 16) = 0.108 (0.433 if a
+  // pixel's paths all decided alike).
+  const int g = openImage.channelIndex("G");
+  double sum = 0, sum2 = 0;
+  const int n = openImage.width * openImage.height;
+  for (int y = 0; y < openImage.height; ++y)
+    for (int x = 0; x < openImage.width; ++x) {
+      const double r = behindImage.at(x, y, g) / openImage.at(x, y, g);
+      sum += r;
+      sum2 += r * r;
+    }
+  const double sigma = std::sqrt(sum2 / n - (sum / n) * (sum / n));
+  EXPECT_NEAR(sigma, 0.108, 0.015);
   const double opaque =
       test::channelMean(test::renderTestScene(emitterBehindSheet(true, 1), camera, setup), "G");
   EXPECT_EQ(opaque, 0.0);  // alpha 1 blocks every path (a black sheet reflects nothing)
