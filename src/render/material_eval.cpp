@@ -37,16 +37,20 @@ Vec4f lookup(const SceneDesc& scene, const TextureRef& ref, const SurfaceHit& hi
 // its uv parameterisation, for meshes that come without TANGENT: a per-face
 // stand-in for MikkTSpace. glTF's v runs down the image while normal maps
 // point +Y up, so the bitangent is -dp/dv. Zero when the uvs are degenerate.
-Vec4f faceTangent(const SceneDesc& scene, const SurfaceHit& hit) {
+// The uvs are those the normal texture reads: its UV set through its
+// KHR_texture_transform, so a rotated or mirrored map turns its frame too.
+Vec4f faceTangent(const SceneDesc& scene, const SurfaceHit& hit, const TextureRef& ref) {
   if (hit.instance < 0 || std::size_t(hit.instance) >= scene.instances.size()) return {};
   const MeshInstance& inst = scene.instances[hit.instance];
   const Mesh& mesh = scene.meshes[inst.mesh];
-  if (mesh.uvs.empty() || 3 * std::size_t(hit.primitive) + 2 >= mesh.indices.size()) return {};
+  const std::vector<Vec2f>& uvs = ref.texCoord == 1 ? mesh.uvs1 : mesh.uvs;
+  if (uvs.empty() || 3 * std::size_t(hit.primitive) + 2 >= mesh.indices.size()) return {};
   const std::uint32_t* idx = &mesh.indices[3 * std::size_t(hit.primitive)];
   const Vec3f p0 = inst.worldFromObject.point(mesh.positions[idx[0]]);
   const Vec3f e1 = inst.worldFromObject.point(mesh.positions[idx[1]]) - p0;
   const Vec3f e2 = inst.worldFromObject.point(mesh.positions[idx[2]]) - p0;
-  const Vec2f d1 = mesh.uvs[idx[1]] - mesh.uvs[idx[0]], d2 = mesh.uvs[idx[2]] - mesh.uvs[idx[0]];
+  const Vec2f t0 = ref.transform.apply(uvs[idx[0]]);
+  const Vec2f d1 = ref.transform.apply(uvs[idx[1]]) - t0, d2 = ref.transform.apply(uvs[idx[2]]) - t0;
   const float det = d1.x * d2.y - d1.y * d2.x;
   if (!(std::abs(det) > 1e-12f)) return {};
   const Vec3f dpdu = (e1 * d2.y - e2 * d1.y) / det;
@@ -78,7 +82,8 @@ ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& 
   Vec3f n = back ? -hit.shadingNormal : hit.shadingNormal;
 
   const bool hasTangent = hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0;
-  const Vec4f tangent4 = !m.normalTexture.valid() || hasTangent ? hit.tangent : faceTangent(scene, hit);
+  const Vec4f tangent4 =
+      !m.normalTexture.valid() || hasTangent ? hit.tangent : faceTangent(scene, hit, m.normalTexture);
   if (m.normalTexture.valid() && (tangent4.x != 0 || tangent4.y != 0 || tangent4.z != 0)) {
     const Vec4f t = lookup(scene, m.normalTexture, hit);
     const Vec3f local{(2 * t.x - 1) * m.normalScale, (2 * t.y - 1) * m.normalScale, 2 * t.z - 1};

@@ -130,5 +130,24 @@ TEST(MaterialEval, TextureSlotsReadTheirUvSetThroughTheirTransform) {
                   0.2f);
 }
 
+TEST(MaterialEval, RotatedNormalMapTurnsTheFrameDerivedFromUvs) {
+  // Rotation 90 degrees: u' = v (world +Z), v' = -u, so the map's +X points
+  // along world +Z and its +Y (toward decreasing v') along world +X.
+  const float s = std::sin(0.5f), c = std::cos(0.5f);
+  struct Case {
+    Vec3f mapNormal, expectedWorld;
+  };
+  for (const Case& k : {Case{{s, 0, c}, {0, c, s}}, Case{{0, s, c}, {s, c, 0}}}) {
+    SceneDesc scene = normalMappedQuad(k.mapNormal, false);
+    scene.materials[0].normalTexture.transform =
+        UvTransform::fromOffsetRotationScale({0, 0}, 1.5707963f, {1, 1});
+    const ShadingPoint sp =
+        evaluateMaterial(MaterialTable(scene), hitOnQuad({0, 0, 0, 0}), normalize(Vec3f{0.1f, 1, 0.2f}));
+    EXPECT_NEAR(sp.frame.n.x, k.expectedWorld.x, 1e-2f);
+    EXPECT_NEAR(sp.frame.n.y, k.expectedWorld.y, 1e-2f);
+    EXPECT_NEAR(sp.frame.n.z, k.expectedWorld.z, 1e-2f);
+  }
+}
+
 }  // namespace
 }  // namespace lensrt
