@@ -18,6 +18,7 @@
 #include "scene/camera_selection.h"
 #include "scene/gltf_loader.h"
 #include "scene/render_scene.h"
+#include "scene/texture_sampling.h"
 
 namespace {
 
@@ -34,8 +35,24 @@ const std::filesystem::path& workDir() {
   return dir;
 }
 
-void checkHit(const std::optional<SurfaceHit>& hit) {
+// Every texture slot of the hit's material, read the way the renderer reads it
+// (UV set, KHR_texture_transform, sampler), must give finite texels.
+void checkTextures(const SceneDesc& desc, const SurfaceHit& hit) {
+  if (hit.material < 0 || static_cast<std::size_t>(hit.material) >= desc.materials.size()) return;
+  const Material& m = desc.materials[static_cast<std::size_t>(hit.material)];
+  for (const TextureRef* ref :
+       {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.emissiveTexture}) {
+    if (!ref->valid()) continue;
+    LENSRT_FUZZ_CHECK(static_cast<std::size_t>(ref->texture) < desc.textures.size());
+    const Vec4f t =
+        sampleTexture(desc.textures[static_cast<std::size_t>(ref->texture)], ref->uv(hit.uv, hit.uv1));
+    LENSRT_FUZZ_CHECK(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w));
+  }
+}
+
+void checkHit(const RenderScene& scene, const std::optional<SurfaceHit>& hit) {
   if (!hit) return;
+  checkTextures(scene.desc(), *hit);
   LENSRT_FUZZ_CHECK(std::isfinite(hit->t) && isFinite(hit->position));
   LENSRT_FUZZ_CHECK(isFinite(hit->geometricNormal) && isFinite(hit->shadingNormal));
   LENSRT_FUZZ_CHECK(std::abs(length(hit->shadingNormal) - 1.0f) < 1e-3f);
@@ -57,11 +74,11 @@ void exercise(const std::filesystem::path& file) {
     const Vec3f corner{(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z};
     const Vec3f target = i < 8 ? corner : b.center();
     const Vec3f d = target - eye;
-    if (length(d) > 0.0f && isFinite(d)) checkHit(scene.intersect(Ray{eye, normalize(d)}));
+    if (length(d) > 0.0f && isFinite(d)) checkHit(scene, scene.intersect(Ray{eye, normalize(d)}));
     const Vec3f axis{i % 3 == 0 ? 1.f : 0.f, i % 3 == 1 ? 1.f : 0.f, i % 3 == 2 ? 1.f : 0.f};
     const Vec3f from = b.center() - axis * (length(b.diagonal()) + 1.0f);
     if (isFinite(from)) {
-      checkHit(scene.intersect(Ray{from, axis}));
+      checkHit(scene, scene.intersect(Ray{from, axis}));
       scene.occluded(Ray{from, axis, 0.0f, 1.0f});
     }
   }
