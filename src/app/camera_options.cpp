@@ -311,6 +311,14 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
 }
 
+// Sixteen numbers, row by row, to float precision and more.
+std::string matrixText(const Transform::Matrix& m) {
+  std::string s;
+  for (const auto& row : m)
+    for (const double v : row) s += fmt::format("{}{:.9g}", s.empty() ? "" : " ", v);
+  return s;
+}
+
 }  // namespace
 
 ImageMetadata cameraMetadata(const Camera& camera) {
@@ -324,6 +332,9 @@ ImageMetadata cameraMetadata(const Camera& camera) {
       {"lensrt:focal_length_mm", fmt::format("{:.4g}", i.focalLengthMm)},
       {"lensrt:sensor_mm", fmt::format("{:.4g}x{:.4g}", f.sensorWidthMm, f.sensorHeightMm)},
       {"lensrt:exposure", i.exposure},
+      // Where the camera stood, so another renderer can take the same view
+      // (tools/validate-cycles does): glTF world space, metres, row by row.
+      {"lensrt:world_from_camera", matrixText(camera.worldFromCamera().matrix())},
   };
 }
 

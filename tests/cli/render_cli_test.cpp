@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <sstream>
+#include <vector>
 
 #include "cli/cli_util.h"
 #include "core/constants.h"
@@ -78,6 +80,24 @@ TEST(RenderCli, WritesTheMetadataAndAovChannels) {
   const float depth = img.at(8, 8, img.channelIndex("depth.Z"));
   EXPECT_GT(depth, 0.5f);
   EXPECT_LT(depth, 2.5f);
+}
+
+// The camera's placement in the metadata is the glTF camera node's: dof_row's
+// camera node is translated to (0, 1.2, 0) with no rotation.
+TEST(RenderCli, MetadataNamesWhereTheCameraStood) {
+  const TempDir dir;
+  const std::string scene = std::string(LENSRT_SOURCE_DIR) + "/scenes/dof_row.gltf";
+  const RunResult r = runLensrt({"render", scene, "--res", "8x8", "--spp", "1", "--max-depth", "0", "-q",
+                                 "-o", (dir / "c.exr").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  ImageMetadata meta;
+  readImage(dir / "c.exr", &meta);
+  std::istringstream text(meta["lensrt:world_from_camera"]);
+  std::vector<double> m;
+  for (double v; text >> v;) m.push_back(v);
+  ASSERT_EQ(m.size(), 16u) << meta["lensrt:world_from_camera"];
+  const double expected[16] = {1, 0, 0, 0, 0, 1, 0, 1.2, 0, 0, 1, 0, 0, 0, 0, 1};
+  for (int i = 0; i < 16; ++i) EXPECT_NEAR(m[i], expected[i], 1e-7) << "entry " << i;
 }
 
 struct BadInput {
