@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -386,9 +386,11 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   if (!m.uvs.empty()) hit.uv = m.uvs[idx[0]] * w + m.uvs[idx[1]] * u + m.uvs[idx[2]] * v;
   if (!m.uvs1.empty()) hit.uv1 = m.uvs1[idx[0]] * w + m.uvs1[idx[1]] * u + m.uvs1[idx[2]] * v;
   if (!m.colors.empty()) {
+    // Embree's barycentrics can stray just outside the triangle (far-away
+    // rays; found by mutating the fuzz seed): keep colours in [0, 1].
     const Vec4f &c0 = m.colors[idx[0]], &c1 = m.colors[idx[1]], &c2 = m.colors[idx[2]];
-    hit.color = {c0.x * w + c1.x * u + c2.x * v, c0.y * w + c1.y * u + c2.y * v,
-                 c0.z * w + c1.z * u + c2.z * v, c0.w * w + c1.w * u + c2.w * v};
+    const auto mix = [&](float a, float b, float c) { return std::clamp(a * w + b * u + c * v, 0.0f, 1.0f); };
+    hit.color = {mix(c0.x, c1.x, c2.x), mix(c0.y, c1.y, c2.y), mix(c0.z, c1.z, c2.z), mix(c0.w, c1.w, c2.w)};
   }
   return hit;
 }

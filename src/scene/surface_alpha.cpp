@@ -19,7 +19,8 @@ float surfaceAlpha(const SceneDesc& scene, const Mesh& mesh, const Material& mat
     alpha *= sampleTexture(scene.textures[ref.texture], ref.uv(interp(mesh.uvs), interp(mesh.uvs1))).w;
   }
   if (!mesh.colors.empty())
-    alpha *= mesh.colors[idx[0]].w * w + mesh.colors[idx[1]].w * u + mesh.colors[idx[2]].w * v;
+    alpha *= std::clamp(mesh.colors[idx[0]].w * w + mesh.colors[idx[1]].w * u + mesh.colors[idx[2]].w * v,
+                        0.0f, 1.0f);
   return alpha;
 }
 
