@@ -2,6 +2,7 @@
 // prescription; further sub-subcommands register through lens_subcommands.h.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -131,6 +132,8 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
     j["nominal_focal_length_mm"] =
         finiteOrNull(rx.nominalFocalLengthMm > 0 ? rx.nominalFocalLengthMm : kInfinity);
     j["surfaces"] = rx.surfaces.size();
+    j["aspheric_surfaces"] = std::count_if(rx.surfaces.begin(), rx.surfaces.end(),
+                                           [](const Surface& s) { return s.isAspheric(); });
     j["length_mm"] = p.lastVertexZ;
     j["efl_mm"] = p.efl;
     j["bfl_mm"] = p.bfl;
@@ -170,8 +173,10 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
   if (!rx.description.empty()) fmt::print("  {}\n", rx.description);
   if (!rx.source.empty()) fmt::print("  source: {}\n", rx.source);
   fmt::print("Positions are mm along the axis from the first vertex, + toward the film.\n");
-  fmt::print("  surfaces              {} (stop: surface {}), length {:.3f} mm\n", rx.surfaces.size(),
-             p.stopIndex + 1, p.lastVertexZ);
+  const auto aspheric =
+      std::count_if(rx.surfaces.begin(), rx.surfaces.end(), [](const Surface& s) { return s.isAspheric(); });
+  fmt::print("  surfaces              {} (stop: surface {}{}), length {:.3f} mm\n", rx.surfaces.size(),
+             p.stopIndex + 1, aspheric > 0 ? fmt::format(", {} aspheric", aspheric) : "", p.lastVertexZ);
   fmt::print("  focal length (EFL)    {:.3f} mm{}\n", p.efl,
              rx.nominalFocalLengthMm > 0 ? fmt::format("  (nominal {:g} mm)", rx.nominalFocalLengthMm) : "");
   fmt::print("  back focal length     {:.3f} mm    front focal length {:.3f} mm\n", p.bfl, p.ffl);

@@ -17,13 +17,6 @@ namespace {
 constexpr double kPageW = 1200.0;
 constexpr double kMaxDrawingH = 500.0;  // px; the page height follows the drawing
 
-// Axial depth of a spherical surface at height rho from the axis (0 = flat).
-double sag(double radius, double rho) {
-  if (radius == 0.0) return 0.0;
-  const double r2 = radius * radius;
-  return radius - std::copysign(std::sqrt(std::max(0.0, r2 - rho * rho)), radius);
-}
-
 // Lens space (z, x in mm) to page pixels: z to the right, +x up.
 struct PageMap {
   double scale = 1.0;  // px per mm
@@ -78,15 +71,16 @@ DrawnRay traceRay(const LensSystem& lens, const FieldPoint& field, double aimX, 
     const double n1 = k >= 2 ? surfaces[k - 2].medium.nd : 1.0, n2 = s.medium.nd;
     if (!s.isStop && n1 != n2) {
       const Vec3d hit = path.back();
-      Vec3d normal = s.radius == 0.0
-                         ? Vec3d{0, 0, -1}
-                         : normalize(Vec3d{hit.x, hit.y, hit.z - (lens.surfaceZ(k - 1) + s.radius)});
+      Vec3d normal =
+          s.isAspheric()    ? asphereNormal(s.profile(), Vec3d{hit.x, hit.y, hit.z - lens.surfaceZ(k - 1)})
+          : s.radius == 0.0 ? Vec3d{0, 0, -1}
+                            : normalize(Vec3d{hit.x, hit.y, hit.z - (lens.surfaceZ(k - 1) + s.radius)});
       if (dot(normal, d) > 0.0) normal = -normal;
       if (!refract(d, normal, n1, n2, d)) return drawn;  // total internal reflection: it ends here
     }
   }
   const Surface& blocker = surfaces[k];
-  const double rimZ = lens.surfaceZ(k) + sag(blocker.radius, blocker.apertureDiameter / 2.0);
+  const double rimZ = lens.surfaceZ(k) + blocker.sag(blocker.apertureDiameter / 2.0);
   const Vec3d from = drawn.points.back();
   if (d.z > 1e-9) {
     const double tb = std::max(0.0, (rimZ - from.z) / d.z);
@@ -137,8 +131,7 @@ Svg drawLensDiagram(const LensView& view) {
   // unless they lie absurdly far away.
   double aMax = 0.0;
   for (const Surface& s : rx.surfaces) aMax = std::max(aMax, s.apertureDiameter / 2.0);
-  const double zFront =
-      std::min(0.0, sag(rx.surfaces.front().radius, rx.surfaces.front().apertureDiameter / 2));
+  const double zFront = std::min(0.0, rx.surfaces.front().sag(rx.surfaces.front().apertureDiameter / 2));
   const double length = filmZ - zFront;
   double zLo = zFront - 0.3 * length, zHi = filmZ + 0.06 * length;
   for (const double z : {p.frontPrincipalZ, p.rearPrincipalZ, p.rearFocalZ, p.entrancePupilZ, p.exitPupilZ})
@@ -194,7 +187,7 @@ Svg drawLensDiagram(const LensView& view) {
   // Optical axis.
   svg.line(map(zLo, 0), map(zHi, 0), "class=\"axis\"");
 
-  // Glass elements: the front and back sphere profiles over their clear
+  // Glass elements: the front and back surface profiles over their clear
   // apertures, joined by a flat step to the larger aperture and a flat edge.
   svg.beginGroup("id=\"elements\"");
   for (int i = 0; i + 1 < static_cast<int>(rx.surfaces.size()); ++i) {
@@ -205,18 +198,18 @@ Svg drawLensDiagram(const LensView& view) {
     const double af = f.apertureDiameter / 2, ab = b.apertureDiameter / 2, edge = std::max(af, ab);
     std::vector<Vec2d> outline;
     const int n = 48;
-    if (af < edge) outline.push_back(map(zf + sag(f.radius, af), edge));
+    if (af < edge) outline.push_back(map(zf + f.sag(af), edge));
     for (int k = 0; k <= n; ++k) {
       const double rho = af - 2.0 * af * k / n;
-      outline.push_back(map(zf + sag(f.radius, rho), rho));
+      outline.push_back(map(zf + f.sag(rho), rho));
     }
-    if (af < edge) outline.push_back(map(zf + sag(f.radius, af), -edge));
-    if (ab < edge) outline.push_back(map(zb + sag(b.radius, ab), -edge));
+    if (af < edge) outline.push_back(map(zf + f.sag(af), -edge));
+    if (ab < edge) outline.push_back(map(zb + b.sag(ab), -edge));
     for (int k = 0; k <= n; ++k) {
       const double rho = -ab + 2.0 * ab * k / n;
-      outline.push_back(map(zb + sag(b.radius, rho), rho));
+      outline.push_back(map(zb + b.sag(rho), rho));
     }
-    if (ab < edge) outline.push_back(map(zb + sag(b.radius, ab), edge));
+    if (ab < edge) outline.push_back(map(zb + b.sag(ab), edge));
     svg.polygon(outline, fmt::format("class=\"element\" data-surfaces=\"{} {}\" data-nd=\"{:g}\"", i + 1,
                                      i + 2, f.medium.nd));
   }

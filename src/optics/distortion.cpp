@@ -13,11 +13,7 @@ constexpr double kMaxFieldDeg = 89.5;  // scene rays must travel toward +z
 
 // Most negative z the front surface reaches within its clear aperture.
 double frontmostZ(const LensSystem& lens) {
-  const Surface& s = lens.prescription().surfaces.front();
-  const double a = s.apertureDiameter / 2.0;
-  if (s.radius >= 0.0) return 0.0;
-  const double r = -s.radius;
-  return -(r - std::sqrt(std::max(0.0, r * r - a * a)));
+  return lens.prescription().surfaces.front().minSag();
 }
 
 // Half-width of the aim-plane scan: wide enough for any passing ray, since a
@@ -26,8 +22,7 @@ double frontmostZ(const LensSystem& lens) {
 double aimScanHalfWidth(const LensSystem& lens, const FieldPoint& field) {
   const Surface& s = lens.prescription().surfaces.front();
   const double a = s.apertureDiameter / 2.0;
-  const double sag =
-      s.radius == 0.0 ? 0.0 : std::abs(s.radius) - std::sqrt(std::max(0.0, s.radius * s.radius - a * a));
+  const double sag = s.maxAbsSag();
   const double depth = std::max(sag, std::abs(lens.paraxial().entrancePupilZ)) + 1.0;
   return 1.3 * a + std::abs(std::tan(field.angleDeg * kDeg)) * depth;
 }

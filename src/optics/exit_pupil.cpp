@@ -71,11 +71,7 @@ class NodeSolver {
     // line from the film point through the rear aperture rim, extended.
     const Surface& rear = lens_.prescription().surfaces.back();
     const double a = rear.apertureDiameter / 2.0;
-    double sagRim = 0.0;
-    if (rear.radius != 0.0) {
-      const double R = std::abs(rear.radius);
-      sagRim = std::abs(R - std::sqrt(std::max(0.0, R * R - a * a)));
-    }
+    const double sagRim = rear.maxAbsSag();
     const double D = filmZ_ - planeZ_;
     const double dRim = std::max(D - sagRim, 1e-3 * D);
     const double extent = 1.05 * (filmRadius + (a + filmRadius) * D / dRim) + 1e-3;

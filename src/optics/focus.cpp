@@ -20,11 +20,7 @@ std::string metres(double mm) {
 
 // Most negative z the front surface reaches within its clear aperture.
 double frontmostZ(const LensSystem& lens) {
-  const Surface& s = lens.prescription().surfaces.front();
-  const double a = s.apertureDiameter / 2.0;
-  if (s.radius >= 0.0) return 0.0;
-  const double R = -s.radius;
-  return -(R - std::sqrt(std::max(0.0, R * R - a * a)));
+  return lens.prescription().surfaces.front().minSag();
 }
 
 // Where an exactly traced ray from the on-axis object, aimed at height h in

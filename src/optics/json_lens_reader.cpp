@@ -58,7 +58,8 @@ LensPrescription parseJsonLens(std::string_view text, const std::string& file) {
   } catch (const json::out_of_range& e) {
     // A number too large for a double (e.g. 1e999) is out_of_range.406, not a parse error.
     std::string what = e.what();
-    if (const std::size_t bracket = what.find("] "); bracket != std::string::npos) what = what.substr(bracket + 2);
+    if (const std::size_t bracket = what.find("] "); bracket != std::string::npos)
+      what = what.substr(bracket + 2);
     throw InputError(file, "invalid JSON: " + what);
   }
   if (!doc.is_object()) throw InputError(file, "a lens file must hold a JSON object");
@@ -81,7 +82,9 @@ LensPrescription parseJsonLens(std::string_view text, const std::string& file) {
     const json& js = (*surfaces)[i];
     const std::string where = "surface " + std::to_string(i + 1) + ": ";
     if (!js.is_object()) throw InputError(file, where + "must be an object");
-    rejectUnknownKeys(js, {"radius", "thickness", "aperture", "nd", "vd", "glass", "stop"}, where, file);
+    rejectUnknownKeys(js,
+                      {"radius", "thickness", "aperture", "nd", "vd", "glass", "stop", "conic", "aspheric"},
+                      where, file);
     Surface s;
     s.radius = getNumber(js, "radius", where, file);
     s.thickness = getNumber(js, "thickness", where, file);
@@ -89,6 +92,16 @@ LensPrescription parseJsonLens(std::string_view text, const std::string& file) {
     s.medium.nd = getNumber(js, "nd", where, file, 1.0);
     s.medium.vd = getNumber(js, "vd", where, file, 0.0);
     s.medium.glass = getString(js, "glass", file);
+    s.conic = getNumber(js, "conic", where, file, 0.0);
+    if (const auto a = js.find("aspheric"); a != js.end()) {
+      if (!a->is_array() || a->size() > static_cast<std::size_t>(kAsphericTerms))
+        throw InputError(file, where + "\"aspheric\" must be an array of at most " +
+                                   std::to_string(kAsphericTerms) + " numbers (A4, A6, ..., A16)");
+      for (std::size_t j = 0; j < a->size(); ++j) {
+        if (!(*a)[j].is_number()) throw InputError(file, where + "\"aspheric\" must hold numbers only");
+        s.aspheric[j] = (*a)[j].get<double>();
+      }
+    }
     if (const auto stop = js.find("stop"); stop != js.end()) {
       if (!stop->is_boolean()) throw InputError(file, where + "\"stop\" must be true or false");
       s.isStop = stop->get<bool>();

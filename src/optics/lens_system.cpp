@@ -31,6 +31,7 @@ bool refract(const Vec3d& d, const Vec3d& n, double n1, double n2, Vec3d& out) {
 LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(prescription)) {
   validatePrescription(prescription_);
   paraxial_ = computeParaxial(prescription_);
+  hasAspheres_ = prescription_.hasAspheres();
   double z = 0.0, ndBefore = 1.0;  // the scene is air
   for (const Surface& s : prescription_.surfaces) {
     TraceSurface t;
@@ -42,6 +43,8 @@ LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(
     t.apertureRadius = s.apertureDiameter / 2.0;
     t.apertureRadius2 = t.apertureRadius * t.apertureRadius;
     t.isStop = s.isStop;
+    t.aspheric = s.isAspheric();
+    t.profile = s.profile();
     t.ndAfter = s.medium.nd;
     t.after = Dispersion::of(s.medium);
     t.etaFromFilm = t.ndAfter / ndBefore;
@@ -51,6 +54,25 @@ LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(
     z += s.thickness;
     ndBefore = t.ndAfter;
   }
+}
+
+// An even asphere: the exact hit by optics/asphere.h, the normal from the
+// sag's derivative. Out of line: it is the rare case, and the spherical step
+// below stays as it was (bit for bit).
+template <bool kFromFilm>
+bool LensSystem::asphereStep(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d,
+                             std::vector<Vec3d>* path) {
+  const Vec3d p{o.x, o.y, o.z - s.z};
+  const auto t = intersectAsphere(s.profile, s.apertureRadius, p, d);
+  if (!t) return false;
+  const Vec3d hit = p + d * *t;
+  o = {hit.x, hit.y, hit.z + s.z};
+  if (path) path->push_back(o);
+  if (eta != 0.0) {
+    const Vec3d n = asphereNormal(s.profile, hit);
+    if (!refractEta(d, dot(n, d) > 0.0 ? -n : n, eta, d)) return false;
+  }
+  return kFromFilm ? d.z < 0.0 : d.z > 0.0;  // false: turned back
 }
 
 // One surface of the trace, everything inline. The trace is a chain of
@@ -64,6 +86,8 @@ LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(
 template <bool kFromFilm>
 inline bool LensSystem::step(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d,
                              std::vector<Vec3d>* path) {
+  if (s.aspheric) [[unlikely]]
+    return asphereStep<kFromFilm>(s, eta, o, d, path);
   // Work relative to the vertex: a sphere through the vertex is
   // x^2 + y^2 + z^2 - 2 R z = 0, which avoids cancellation for large R.
   const Vec3d p{o.x, o.y, o.z - s.z};
@@ -156,7 +180,9 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
 
 void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const {
   if (out.size() != rays.size()) throw std::invalid_argument("traceFromFilm: as many outputs as rays");
-  if (trace_lanes::available()) return traceFromFilmVectorized(rays, out);
+  // The vector step knows only spheres: aspheric lenses take the one-lane
+  // loop below, which calls the same step() as the one-ray trace.
+  if (trace_lanes::available() && !hasAspheres_) return traceFromFilmVectorized(rays, out);
   const int count = surfaceCount();
   const TraceSurface* const surfaces = surfaces_.data();
   for (std::size_t first = 0; first < rays.size(); first += kTraceLanes) {

@@ -40,7 +40,7 @@ class LensSystem {
 
   // A ray leaving a film point toward the scene (direction.z < 0). Returns the
   // ray leaving the front surface into the scene, or nullopt when an aperture,
-  // the stop, a missed sphere or total internal reflection blocks it. Never
+  // the stop, a missed surface or total internal reflection blocks it. Never
   // returns non-finite values. `path`, when given, receives every surface hit.
   std::optional<LensRay> traceFromFilm(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
                                        std::vector<Vec3d>* path = nullptr) const;
@@ -73,9 +73,13 @@ class LensSystem {
     double etaFromScene = 1.0;  // ndBefore / ndAfter
     bool refracts = false;
     bool isStop = false;
+    bool aspheric = false;  // traced by asphereStep (optics/asphere.h)
+    AsphereProfile profile;
     double ndAfter = 1.0;  // index after the surface (toward the film) at the d line
     Dispersion after;
   };
+  template <bool kFromFilm>
+  static bool asphereStep(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d, std::vector<Vec3d>* path);
   template <bool kFromFilm>
   static bool step(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d, std::vector<Vec3d>* path);
   // The batched trace on CPUs with vector units (optics/trace_lanes.h).
@@ -86,6 +90,7 @@ class LensSystem {
   LensPrescription prescription_;
   ParaxialData paraxial_;
   std::vector<TraceSurface> surfaces_;
+  bool hasAspheres_ = false;
 };
 
 // Refract unit direction d at a surface with unit normal n facing against d

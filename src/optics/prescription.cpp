@@ -17,6 +17,10 @@ int LensPrescription::stopIndex() const {
   return -1;
 }
 
+bool LensPrescription::hasAspheres() const {
+  return std::any_of(surfaces.begin(), surfaces.end(), [](const Surface& s) { return s.isAspheric(); });
+}
+
 double LensPrescription::length() const {
   double z = 0.0;
   for (std::size_t i = 0; i + 1 < surfaces.size(); ++i) z += surfaces[i].thickness;
@@ -29,19 +33,51 @@ LensPrescription LensPrescription::scaled(double factor) const {
     s.radius *= factor;
     s.thickness *= factor;
     s.apertureDiameter *= factor;
+    // z'(r) = f z(r / f): the term A r^n becomes A f^(1 - n) r^n.
+    double power = factor * factor * factor;  // f^3 for n = 4
+    for (double& a : s.aspheric) {
+      a /= power;
+      power *= factor * factor;
+    }
   }
   out.nominalFocalLengthMm *= factor;
   return out;
 }
 
-namespace {
-
-// Axial sag of a sphere at height r (signed like the radius); 0 when flat.
-double sag(double radius, double r) {
+double Surface::sag(double r) const {
+  if (isAspheric()) return profile().sag(r * r).value_or(0.0);
   if (radius == 0.0) return 0.0;
   const double R = std::abs(radius);
   return std::copysign(R - std::sqrt(std::max(0.0, R * R - r * r)), radius);
 }
+
+namespace {
+
+// Samples of an asphere's sag across the clear aperture, for the extremes
+// (a polynomial profile need not be monotonic).
+template <typename F>
+void forSagSamples(const Surface& s, F&& f) {
+  constexpr int kSteps = 64;
+  for (int j = 0; j <= kSteps; ++j) f(s.sag(s.apertureDiameter / 2.0 * j / kSteps));
+}
+
+}  // namespace
+
+double Surface::minSag() const {
+  if (!isAspheric()) return std::min(0.0, sag(apertureDiameter / 2.0));
+  double lowest = 0.0;
+  forSagSamples(*this, [&](double z) { lowest = std::min(lowest, z); });
+  return lowest;
+}
+
+double Surface::maxAbsSag() const {
+  if (!isAspheric()) return std::abs(sag(apertureDiameter / 2.0));
+  double largest = 0.0;
+  forSagSamples(*this, [&](double z) { largest = std::max(largest, std::abs(z)); });
+  return largest;
+}
+
+namespace {
 
 std::string fmtMm(double v) {
   char buf[64];
@@ -66,6 +102,11 @@ void validatePrescription(const LensPrescription& lens) {
     for (const double v : {s.radius, s.thickness, s.apertureDiameter, s.medium.nd, s.medium.vd})
       if (!std::isfinite(v)) fail(&s, i, "a number is NaN or infinite");
     if (std::abs(s.radius) > 1e7) fail(&s, i, "radius " + fmtMm(s.radius) + " is absurd (use 0 for flat)");
+    if (!std::isfinite(s.conic)) fail(&s, i, "the conic constant is NaN or infinite");
+    if (std::abs(s.conic) > 1e6) fail(&s, i, "conic constant " + std::to_string(s.conic) + " is absurd");
+    for (std::size_t j = 0; j < s.aspheric.size(); ++j)
+      if (!std::isfinite(s.aspheric[j]))
+        fail(&s, i, "aspheric coefficient A" + std::to_string(4 + 2 * j) + " is NaN or infinite");
     if (s.thickness < 0.0) fail(&s, i, "negative thickness " + fmtMm(s.thickness));
     if (s.thickness > kMaxLengthMm) fail(&s, i, "thickness " + fmtMm(s.thickness) + " is absurd");
     if (s.apertureDiameter <= 0.0)
@@ -76,7 +117,26 @@ void validatePrescription(const LensPrescription& lens) {
       fail(&s, i, "refractive index " + std::to_string(s.medium.nd) + " is outside [1, 4]");
     if (s.medium.vd < 0.0 || s.medium.vd > 200.0)
       fail(&s, i, "Abbe number " + std::to_string(s.medium.vd) + " is outside [0, 200]");
-    if (s.radius != 0.0 && std::abs(s.radius) < s.apertureDiameter / 2.0)
+    if (s.isAspheric()) {
+      // The sag and its slope must exist over the whole clear aperture, and
+      // stay within the lens's size (huge polynomial terms are garbage).
+      const AsphereProfile profile = s.profile();
+      const double rMax = s.apertureDiameter / 2.0;
+      if (!(profile.domainRadius() > rMax))
+        fail(&s, i,
+             "aperture diameter " + fmtMm(s.apertureDiameter) +
+                 " is wider than the conic's domain (diameter " + fmtMm(2.0 * profile.domainRadius()) + ")");
+      constexpr int kSteps = 64;
+      for (int j = 0; j <= kSteps; ++j) {
+        const double r = rMax * j / kSteps;
+        const auto z = profile.sag(r * r);
+        const auto slope = profile.slopeOverR(r * r);
+        if (!z || !slope || !std::isfinite(*z) || !std::isfinite(*slope) || std::abs(*z) > kMaxLengthMm)
+          fail(&s, i,
+               "the aspheric sag is not finite or absurd within the clear aperture (at height " + fmtMm(r) +
+                   ")");
+      }
+    } else if (s.radius != 0.0 && std::abs(s.radius) < s.apertureDiameter / 2.0)
       fail(&s, i,
            "aperture diameter " + fmtMm(s.apertureDiameter) + " is wider than the sphere of radius " +
                fmtMm(s.radius));
@@ -84,6 +144,7 @@ void validatePrescription(const LensPrescription& lens) {
       ++stops;
       if (stops > 1) fail(&s, i, "a second aperture stop (a lens has exactly one)");
       if (s.radius != 0.0) fail(&s, i, "the aperture stop must be flat (radius 0)");
+      if (s.isAspheric()) fail(&s, i, "the aperture stop must not be aspheric");
       const Medium& before = k > 0 ? lens.surfaces[k - 1].medium : Medium{};
       if (before.nd != s.medium.nd) fail(&s, i, "the aperture stop must not change the medium");
     }
@@ -98,7 +159,7 @@ void validatePrescription(const LensPrescription& lens) {
     constexpr int kSteps = 32;
     for (int j = 0; j <= kSteps; ++j) {
       const double r = rMax * j / kSteps;
-      const double gap = a.thickness + sag(b.radius, r) - sag(a.radius, r);
+      const double gap = a.thickness + b.sag(r) - a.sag(r);
       // 1 micrometre of tolerance: cemented and touching designs are fine.
       if (gap < -1e-3)
         fail(&b, static_cast<int>(k + 1),

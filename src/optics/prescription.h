@@ -1,5 +1,5 @@
-// A lens prescription: the ordered spherical surfaces of a lens, from the
-// object (scene) side to the film, in millimetres.
+// A lens prescription: the ordered spherical or even-aspheric surfaces of a
+// lens, from the object (scene) side to the film, in millimetres.
 //
 // Surface i sits at the axial vertex position z_i (z_0 = 0, z_{i+1} = z_i +
 // thickness_i). radius > 0 means the centre of curvature lies on the film side
@@ -8,11 +8,14 @@
 // film, always air in practice). The last surface's thickness is the nominal
 // film distance of the design (0 when the source does not give it).
 // Exactly one surface is the aperture stop (flat, medium unchanged across it).
+// A surface is aspheric when its conic constant or any of A4..A16 is non-zero
+// (optics/asphere.h); radius is then the base (vertex) radius.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "optics/asphere.h"
 #include "optics/glass.h"
 
 namespace lensrt {
@@ -23,7 +26,23 @@ struct Surface {
   double apertureDiameter = 0.0;  // mm, clear aperture
   Medium medium;                  // after this surface
   bool isStop = false;
-  int line = 0;  // line in the source file, for messages (0 when unknown)
+  double conic = 0.0;               // conic constant k (0: sphere)
+  AsphericCoefficients aspheric{};  // A4, A6, ..., A16 (all 0: no polynomial)
+  int line = 0;                     // line in the source file, for messages (0 when unknown)
+
+  bool isAspheric() const {
+    if (conic != 0.0) return true;
+    for (const double a : aspheric)
+      if (a != 0.0) return true;
+    return false;
+  }
+  AsphereProfile profile() const { return {radius != 0.0 ? 1.0 / radius : 0.0, conic, aspheric}; }
+  // Axial sag at height r (signed: + toward the film); r within the aperture.
+  double sag(double r) const;
+  // Extremes of the sag over the clear aperture: the most negative value
+  // (<= 0) and the largest magnitude. For a sphere both are at the rim.
+  double minSag() const;
+  double maxAbsSag() const;
 };
 
 struct LensPrescription {
@@ -35,6 +54,7 @@ struct LensPrescription {
   std::vector<Surface> surfaces;
 
   int stopIndex() const;  // -1 when there is none
+  bool hasAspheres() const;
   // Distance from the first to the last vertex (excludes the film distance).
   double length() const;
   // The same design scaled uniformly (radii, thicknesses, apertures).
@@ -46,7 +66,8 @@ inline constexpr int kMaxSurfaces = 200;
 inline constexpr double kMaxLengthMm = 10000.0;  // any radius, thickness or aperture
 
 // Throws InputError(file, message, line) when the prescription cannot be a
-// real lens: bad numbers, no or several stops, aperture wider than its sphere,
+// real lens: bad numbers, no or several stops, aperture wider than its sphere
+// (or than an asphere's domain), an aspheric stop,
 // surfaces that cut into each other within their clear apertures.
 void validatePrescription(const LensPrescription& lens);
 

@@ -19,9 +19,7 @@ FilmIrradiance filmIrradiance(const LensSystem& lens, double filmDistanceMm, dou
   // line meets the vertex plane differs by the cap's depth times the slope.
   const Surface& rear = lens.prescription().surfaces.back();
   const double a = rear.apertureDiameter / 2.0;
-  const double sag = rear.radius == 0.0 ? 0.0
-                                        : std::abs(rear.radius) -
-                                              std::sqrt(std::max(0.0, rear.radius * rear.radius - a * a));
+  const double sag = rear.maxAbsSag();
   const double slope = (std::abs(filmRadiusMm) + a) / std::max(filmDistanceMm - sag, 0.1 * filmDistanceMm);
   const double half = 1.5 * a + sag * slope;
 

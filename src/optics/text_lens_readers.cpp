@@ -1,8 +1,10 @@
 // The two line-oriented formats: pbrt's .dat and the seed's table (.lens).
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "optics/lens_readers.h"
@@ -58,16 +60,66 @@ double number(std::string_view token, const char* what, const std::string& file,
   return *v;
 }
 
+// Optional "k=-0.5 A4=1.2e-6 ... A16=..." tokens at the end of a table row:
+// the surface's conic constant and aspheric coefficients. Removed from tokens.
+void readAsphericTokens(std::vector<std::string_view>& tokens, Surface& s, const std::string& file,
+                        int line) {
+  std::array<bool, 1 + kAsphericTerms> seen{};
+  while (!tokens.empty() && tokens.back().find('=') != std::string_view::npos) {
+    const std::string_view token = tokens.back();
+    const std::size_t eq = token.find('=');
+    const std::string key = lower(token.substr(0, eq));
+    int slot = -1;  // 0: k, 1 + j: A_{2j+4}
+    if (key == "k")
+      slot = 0;
+    else
+      for (int j = 0; j < kAsphericTerms; ++j)
+        if (key == "a" + std::to_string(4 + 2 * j)) slot = 1 + j;
+    if (slot < 0)
+      throw InputError(file,
+                       "unknown aspheric term '" + std::string(token.substr(0, eq)) +
+                           "' (expected k, A4, A6, A8, A10, A12, A14 or A16)",
+                       line);
+    if (seen[slot])
+      throw InputError(file, "aspheric term '" + std::string(token.substr(0, eq)) + "' given twice", line);
+    seen[slot] = true;
+    const std::string what = "aspheric term " + std::string(token.substr(0, eq));
+    const double v = number(token.substr(eq + 1), what.c_str(), file, line);
+    (slot == 0 ? s.conic : s.aspheric[slot - 1]) = v;
+    tokens.pop_back();
+  }
+  for (const std::string_view t : tokens)
+    if (t.find('=') != std::string_view::npos)
+      throw InputError(file, "aspheric terms (" + std::string(t) + ") must come after the other columns",
+                       line);
+}
+
 }  // namespace
 
 LensPrescription parsePbrtLens(std::string_view text, const std::string& file) {
   LensPrescription lens;
   std::string firstComment;
+  bool loneFocalLength = false;
   for (const TextLine& l : splitLines(text)) {
     if (const std::string_view c = commentOf(l.text); !c.empty() && lens.surfaces.empty())
       readMetadataComment(c, lens, firstComment, file, l.number);
     const auto tokens = tokenize(l.text);
     if (tokens.empty()) continue;
+    // ISET's and pbrt-v3's files give the nominal focal length as a lone
+    // number before the first surface row ("# Focal length (mm)", "50.000").
+    if (tokens.size() == 1 && lens.surfaces.empty() && !loneFocalLength) {
+      if (const auto f = parseNumber(tokens[0])) {
+        if (!(*f > 0.0) || *f > kMaxLengthMm)
+          throw InputError(
+              file,
+              "the focal length before the first surface must be a positive number of mm, got '" +
+                  std::string(tokens[0]) + "'",
+              l.number);
+        lens.nominalFocalLengthMm = *f;
+        loneFocalLength = true;
+        continue;
+      }
+    }
     if (tokens.size() != 4)
       throw InputError(file,
                        "expected 4 columns (radius, thickness, index, aperture diameter), got " +
@@ -110,6 +162,7 @@ LensPrescription parseTableLens(std::string_view text, const std::string& file) 
     const bool flatWord = first == "flat";
     s.radius = (stopWord || flatWord) ? 0.0 : number(tokens[0], "the radius", file, l.number);
     s.isStop = stopWord || (!flatWord && s.radius == 0.0);
+    readAsphericTokens(tokens, s, file, l.number);
     // An optional trailing glass name on a glass row.
     if (tokens.size() == 6 && !parseNumber(tokens[5])) {
       s.medium.glass = std::string(tokens[5]);

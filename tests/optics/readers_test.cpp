@@ -28,6 +28,30 @@ TEST(Readers, PbrtToleratesBomCrlfAndNoFinalNewline) {
   EXPECT_NO_THROW(validatePrescription(lens));
 }
 
+// ISET's and pbrt-v3's files: the nominal focal length as a lone number
+// before the first surface row.
+TEST(Readers, PbrtReadsAFocalLengthBeforeTheFirstRow) {
+  const LensPrescription lens = loadLens(std::string(LENSRT_TEST_DATA_DIR) + "/optics/iset-dgauss-50mm.dat");
+  EXPECT_DOUBLE_EQ(lens.nominalFocalLengthMm, 50.0);
+  ASSERT_EQ(lens.surfaces.size(), 11u);
+  EXPECT_DOUBLE_EQ(lens.surfaces[0].radius, 29.475);
+  EXPECT_EQ(lens.surfaces[0].line, 8);
+  // The same rows as the library's dgauss-50mm.
+  const LensPrescription library = test::libraryLens("dgauss-50mm");
+  for (std::size_t i = 0; i < library.surfaces.size(); ++i) {
+    EXPECT_EQ(lens.surfaces[i].radius, library.surfaces[i].radius);
+    EXPECT_EQ(lens.surfaces[i].thickness, library.surfaces[i].thickness);
+  }
+  const LensPrescription bare = parsePbrtLens(
+      "\xEF\xBB\xBF"
+      "35\r\n50 5 1.5 20\r\n0 2 0 18\r\n",
+      "b.dat");
+  EXPECT_DOUBLE_EQ(bare.nominalFocalLengthMm, 35.0);
+  EXPECT_EQ(bare.surfaces.size(), 2u);
+  // A second lone number is a row with the wrong column count.
+  EXPECT_THROW(parsePbrtLens("35\n36\n50 5 1.5 20\n", "c.dat"), InputError);
+}
+
 TEST(Readers, TableReadsTheSeedLayout) {
   const std::string text =
       "# name: t\n# focal-length-mm: 99\nradius thick n_d V ap\n 58.950 7.520 1.670 47.1 50.4\n"
@@ -98,7 +122,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"index-below-one.dat", "refractive index", 4},
         BadCase{"syntax-error.json", "invalid JSON", 4}, BadCase{"unknown-key.json", "unknown key", 0},
         BadCase{"missing-aperture.json", "missing \"aperture\"", 0},
-        BadCase{"no-surfaces.json", "no surfaces", 0}, BadCase{"no-format.json", "\"format\"", 0}),
+        BadCase{"no-surfaces.json", "no surfaces", 0}, BadCase{"no-format.json", "\"format\"", 0},
+        BadCase{"lone-number-after-first-row.dat", "expected 4 columns", 6},
+        BadCase{"negative-focal-length.dat", "focal length before the first surface must be a positive", 2},
+        BadCase{"unknown-aspheric-term.lens", "unknown aspheric term 'A5'", 1},
+        BadCase{"aperture-beyond-conic-domain.lens", "wider than the conic's domain", 1},
+        BadCase{"aspheric-not-numbers.json", "\"aspheric\" must hold numbers only", 0}),
     [](const testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.file;
       for (char& ch : name)

@@ -1,0 +1,302 @@
+// Even aspheres: the sag, the exact intersection, the normal, and the conic
+// that images a point perfectly, all against closed forms.
+#include "optics/asphere.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <vector>
+
+#include "core/error.h"
+#include "optics/lens_readers.h"
+#include "optics/lens_system.h"
+#include "optics/sample_sequence.h"
+#include "optics_test_util.h"
+
+namespace lensrt {
+namespace {
+
+bool sameBits(const Vec3d& a, const Vec3d& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// A stop, then one refracting surface into glass of index n: the image forms
+// inside the glass (thickness `depth` behind the surface).
+LensPrescription singleSurface(const Surface& front, double n, double depth) {
+  LensPrescription lens;
+  lens.name = "surface";
+  Surface stop;
+  stop.isStop = true;
+  stop.apertureDiameter = front.apertureDiameter;
+  stop.thickness = 10.0;  // room for a concave surface's sag
+  Surface s = front;
+  s.thickness = depth;
+  s.medium.nd = n;
+  lens.surfaces = {stop, s};
+  return lens;
+}
+
+TEST(Asphere, SagIsTheConicFormulaPlusThePolynomial) {
+  const AsphereProfile a{1.0 / 40.0, -0.6, {2e-6, -3e-9, 1e-12, 0, 0, 0, 0}};
+  const double r = 12.0, c = 1.0 / 40.0, k = -0.6;
+  const double expected = c * r * r / (1 + std::sqrt(1 - (1 + k) * c * c * r * r)) + 2e-6 * std::pow(r, 4) -
+                          3e-9 * std::pow(r, 6) + 1e-12 * std::pow(r, 8);
+  EXPECT_NEAR(*a.sag(r * r), expected, 1e-12);
+  // The slope by a central difference.
+  const double h = 1e-5;
+  const double numeric = (*a.sag((r + h) * (r + h)) - *a.sag((r - h) * (r - h))) / (2 * h);
+  EXPECT_NEAR(*a.slopeOverR(r * r) * r, numeric, 1e-8);
+  // A sphere's domain is its radius; outside it there is no sag.
+  const AsphereProfile sphere{1.0 / 40.0, 0.0, {}};
+  EXPECT_DOUBLE_EQ(sphere.domainRadius(), 40.0);
+  EXPECT_FALSE(sphere.sag(41.0 * 41.0).has_value());
+  EXPECT_TRUE(std::isinf(AsphereProfile{1.0 / 40.0, -1.0, {}}.domainRadius()));  // paraboloid
+}
+
+// k = 0 and every A = 0 is the sphere: the same code path, the same bits.
+TEST(Asphere, ASphereWrittenAsAnAsphereTracesBitIdentically) {
+  const std::string plain = "50 5 1.5 60 20\n-50 2 20\nstop 2 18\n-50 40 1.5 60 20\n80 30 20\n";
+  const std::string asph =
+      "50 5 1.5 60 20 k=0 A4=0 A16=0\n-50 2 20 k=0\nstop 2 18\n-50 40 1.5 60 20 A6=0\n80 30 20\n";
+  const LensSystem a(parseTableLens(plain, "a.lens")), b(parseTableLens(asph, "b.lens"));
+  SplitMix64 rng(5);
+  int passed = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3d o{(rng.uniform() - 0.5) * 20, (rng.uniform() - 0.5) * 20, a.rearZ() + 30};
+    const Vec3d d = Vec3d{(rng.uniform() - 0.5) * 20, (rng.uniform() - 0.5) * 20, a.rearZ()} - o;
+    const auto ra = a.traceFromFilm({o, d}), rb = b.traceFromFilm({o, d});
+    ASSERT_EQ(ra.has_value(), rb.has_value());
+    if (!ra) continue;
+    ++passed;
+    EXPECT_TRUE(sameBits(ra->origin, rb->origin) && sameBits(ra->direction, rb->direction)) << i;
+  }
+  EXPECT_GT(passed, 200);
+}
+
+// The general (Newton) path on a surface that is a sphere to 1e-15 agrees
+// with the sphere's closed-form step far below any optical tolerance.
+TEST(Asphere, NewtonPathAgreesWithTheSphere) {
+  Surface sphere;
+  sphere.radius = -30.0;
+  sphere.apertureDiameter = 30.0;
+  Surface nearly = sphere;
+  nearly.aspheric[6] = 1e-40;  // A16: changes the sag by < 1e-19 mm inside the aperture
+  ASSERT_TRUE(nearly.isAspheric());
+  const LensSystem a(singleSurface(sphere, 1.6, 80.0)), b(singleSurface(nearly, 1.6, 80.0));
+  SplitMix64 rng(9);
+  int passed = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3d o{(rng.uniform() - 0.5) * 40, (rng.uniform() - 0.5) * 40, -20.0};
+    const Vec3d d{(rng.uniform() - 0.5) * 0.8, (rng.uniform() - 0.5) * 0.8, 1.0};
+    const auto ra = a.traceFromScene({o, d}), rb = b.traceFromScene({o, d});
+    ASSERT_EQ(ra.has_value(), rb.has_value()) << i;
+    if (!ra) continue;
+    ++passed;
+    EXPECT_LT(length(ra->origin - rb->origin), 1e-9);
+    EXPECT_LT(length(ra->direction - rb->direction), 1e-12);
+  }
+  EXPECT_GT(passed, 500);
+}
+
+// Refraction from air into glass of index n at an ellipsoid of eccentricity
+// e = 1/n (k = -e^2) focuses a collimated axial bundle at the ellipse's far
+// focus, a distance a (1 + e) = R / (1 - e) = n R / (n - 1) behind the vertex
+// (R = a (1 - e^2) the vertex radius): the classic Cartesian oval of an
+// object at infinity. The same bundle on the base sphere does not focus.
+double axialSpotRms(const Surface& front, double n, double imageDepth) {
+  const LensSystem lens(singleSurface(front, n, imageDepth));
+  const double vertexZ = lens.surfaceZ(1), imageZ = vertexZ + imageDepth;
+  double sum = 0.0;
+  int count = 0;
+  for (int j = -10; j <= 10; ++j)
+    for (int i = -10; i <= 10; ++i) {
+      const double x = 0.098 * front.apertureDiameter * i / 2, y = 0.098 * front.apertureDiameter * j / 2;
+      const auto out = lens.traceFromScene({{x, y, -5.0}, {0.0, 0.0, 1.0}});
+      if (!out) continue;
+      const double t = (imageZ - out->origin.z) / out->direction.z;
+      const Vec3d p = out->origin + out->direction * t;
+      sum += p.x * p.x + p.y * p.y;
+      ++count;
+    }
+  EXPECT_GT(count, 300);
+  return std::sqrt(sum / count);
+}
+
+TEST(Asphere, EllipsoidWithConicMinusOneOverNSquaredFocusesPerfectly) {
+  for (const double n : {1.5, 1.8}) {
+    const double R = 40.0;
+    Surface s;
+    s.radius = R;
+    s.apertureDiameter = 50.0;  // F/1-ish into the glass
+    const double focus = n * R / (n - 1.0);
+    const double sphereRms = axialSpotRms(s, n, focus);
+    s.conic = -1.0 / (n * n);
+    const double ellipsoidRms = axialSpotRms(s, n, focus);
+    EXPECT_LT(ellipsoidRms, 1e-3) << "n = " << n;  // < 1 um
+    EXPECT_GT(sphereRms, 0.1) << "n = " << n;      // the sphere's spherical aberration
+  }
+}
+
+// A base sphere plus A4: z = c r^2 / (1 + sqrt(1 - c^2 r^2)) + A4 r^4, slope
+// c r / sqrt(1 - c^2 r^2) + 4 A4 r^3. Every hit lies on the surface and
+// refracts by Snell's law about that analytic normal.
+TEST(Asphere, PolynomialSurfaceHitAndNormalMatchTheClosedForm) {
+  const double c = 1.0 / 200.0, A4 = 2e-5;
+  Surface s;
+  s.radius = 200.0;
+  s.aspheric[0] = A4;
+  s.apertureDiameter = 30.0;
+  const double n = 1.5;
+  const LensSystem lens(singleSurface(s, n, 50.0));
+  const double z0 = lens.surfaceZ(1);
+  SplitMix64 rng(3);
+  int checked = 0;
+  for (int i = 0; i < 500; ++i) {
+    const Vec3d o{(rng.uniform() - 0.5) * 20, (rng.uniform() - 0.5) * 20, -10.0};
+    const Vec3d d = normalize(Vec3d{(rng.uniform() - 0.5), (rng.uniform() - 0.5), 1.0});
+    const auto out = lens.traceFromScene({o, d});
+    if (!out) continue;
+    ++checked;
+    const Vec3d h = out->origin;
+    const double r2 = h.x * h.x + h.y * h.y, r = std::sqrt(r2);
+    EXPECT_NEAR(h.z - z0, c * r2 / (1 + std::sqrt(1 - c * c * r2)) + A4 * r2 * r2, 1e-10);
+    const double slope = c * r / std::sqrt(1 - c * c * r2) + 4 * A4 * r2 * r;  // dz/dr
+    const Vec3d normal = normalize(Vec3d{-slope * h.x / r, -slope * h.y / r, 1.0});
+    // Snell: the tangential components of n1 d and n2 d' agree (which also
+    // keeps the refracted ray in the plane of incidence).
+    const Vec3d t1 = d - normal * dot(d, normal),
+                t2 = (out->direction - normal * dot(out->direction, normal)) * n;
+    EXPECT_LT(length(t1 - t2), 1e-12);
+  }
+  EXPECT_GT(checked, 300);
+}
+
+// Rays that graze the surface, pass beside it, start on it, run parallel to
+// the axis outside it or meet it at the rim: a clean hit or a clean miss,
+// never a NaN.
+TEST(Asphere, IntersectionIsRobust) {
+  const AsphereProfile hyperboloid{1.0 / 20.0, -3.0, {1e-6, 0, 0, 0, 0, 0, 0}};
+  const AsphereProfile ellipsoid{1.0 / 20.0, 0.5, {-1e-6, 2e-9, 0, 0, 0, 0, 0}};
+  for (const AsphereProfile& a : {hyperboloid, ellipsoid}) {
+    const double rMax = 15.0;
+    ASSERT_GT(a.domainRadius(), rMax);
+    // Parallel to the axis, outside: a miss; inside: the sag exactly.
+    EXPECT_FALSE(intersectAsphere(a, rMax, {16, 0, -5}, {0, 0, 1}));
+    const auto axial = intersectAsphere(a, rMax, {10, 0, -5}, {0, 0, 1});
+    ASSERT_TRUE(axial);
+    EXPECT_NEAR(*axial - 5.0, *a.sag(100.0), 1e-12);
+    // Beside the cylinder entirely.
+    EXPECT_FALSE(intersectAsphere(a, rMax, {0, 20, -5}, {1, 0, 0}));
+    // Perpendicular to the axis, in front of the vertex: no crossing.
+    EXPECT_FALSE(intersectAsphere(a, rMax, {-20, 0, -1}, {1, 0, 0}));
+    // Grazing: perpendicular to the axis just behind the vertex plane crosses
+    // the curved surface where the sag equals that depth.
+    const double depth = *a.sag(100.0);
+    const auto graze = intersectAsphere(a, rMax, {-20, 0, depth}, {1, 0, 0});
+    ASSERT_TRUE(graze);
+    EXPECT_NEAR(std::abs(*graze - 20.0), 10.0, 1e-9);
+    // Random rays, any direction, from anywhere near: finite or nothing.
+    SplitMix64 rng(17);
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const Vec3d p{(rng.uniform() - 0.5) * 50, (rng.uniform() - 0.5) * 50, (rng.uniform() - 0.5) * 20};
+      const Vec3d d = normalize(Vec3d{rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5});
+      const auto t = intersectAsphere(a, rMax, p, d);
+      if (!t) continue;
+      ++hits;
+      ASSERT_TRUE(std::isfinite(*t));
+      const Vec3d h = p + d * *t;
+      const double r2 = h.x * h.x + h.y * h.y;
+      ASSERT_LE(r2, rMax * rMax * (1 + 1e-12));
+      ASSERT_NEAR(h.z, *a.sag(std::min(r2, rMax * rMax)), 1e-7) << i;
+      ASSERT_TRUE(isFinite(asphereNormal(a, h)));
+    }
+    EXPECT_GT(hits, 1000);
+  }
+}
+
+// Aspheric data survives scaling: z'(r) = f z(r / f).
+TEST(Asphere, ScalingKeepsTheShape) {
+  LensPrescription lens = test::singlet(50, -50, 5, 1.5);
+  lens.surfaces[1].conic = -0.4;
+  lens.surfaces[1].aspheric = {1e-5, -2e-8, 3e-11, 0, 0, 0, 1e-25};
+  const LensPrescription big = lens.scaled(2.0);
+  for (const double r : {3.0, 7.0, 9.5})
+    EXPECT_NEAR(big.surfaces[1].sag(2 * r), 2 * lens.surfaces[1].sag(r), 1e-12);
+}
+
+TEST(Asphere, ReadersCarryConicAndCoefficients) {
+  const LensPrescription t =
+      parseTableLens("50 5 1.5 60 20 k=-0.5 A4=1e-6 a16=2e-20\n-50 2 20 A6=-3e-9\nstop 2 18\n", "t.lens");
+  EXPECT_DOUBLE_EQ(t.surfaces[0].conic, -0.5);
+  EXPECT_DOUBLE_EQ(t.surfaces[0].aspheric[0], 1e-6);
+  EXPECT_DOUBLE_EQ(t.surfaces[0].aspheric[6], 2e-20);
+  EXPECT_DOUBLE_EQ(t.surfaces[1].aspheric[1], -3e-9);
+  EXPECT_TRUE(t.surfaces[1].medium.isAir());
+  const LensPrescription j = parseJsonLens(
+      R"({"format": "lensrt-lens", "surfaces": [
+          {"radius": 50, "thickness": 5, "aperture": 20, "nd": 1.5, "conic": -1, "aspheric": [1e-6, 0, 5e-12]},
+          {"radius": 0, "thickness": 30, "aperture": 18, "stop": true}]})",
+      "j.json");
+  EXPECT_DOUBLE_EQ(j.surfaces[0].conic, -1.0);
+  EXPECT_DOUBLE_EQ(j.surfaces[0].aspheric[2], 5e-12);
+  EXPECT_FALSE(j.surfaces[1].isAspheric());
+  const auto rejects = [](const std::string& text, const std::string& message) {
+    try {
+      parseTableLens(text, "x.lens");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(e.message().find(message), std::string::npos) << e.what();
+    }
+  };
+  rejects("50 5 1.5 60 20 A5=1\n", "unknown aspheric term 'A5'");
+  rejects("50 5 1.5 60 20 k=1 k=2\n", "given twice");
+  rejects("50 5 1.5 60 20 k=x\n", "expected a number for aspheric term k");
+  rejects("50 5 k=1 1.5 60 20\n", "must come after");
+}
+
+// Validation: the clear aperture must lie inside the conic's domain, the
+// stop cannot be aspheric.
+TEST(Asphere, ImpossibleAspheresAreRefused) {
+  LensPrescription lens = test::singlet(50, -50, 14, 1.5, 40.0);
+  lens.surfaces[1].conic = 3.0;  // oblate: domain radius 50 / 2 = 25 > 20, fine
+  EXPECT_NO_THROW(validatePrescription(lens));
+  lens.surfaces[1].conic = 6.0;  // domain radius 50 / sqrt(7) = 18.9 < 20
+  EXPECT_THROW(validatePrescription(lens), InputError);
+  lens.surfaces[1].conic = 0.0;
+  lens.surfaces[0].aspheric[0] = 1e-6;  // the stop
+  EXPECT_THROW(validatePrescription(lens), InputError);
+  lens.surfaces[0].aspheric[0] = 0.0;
+  lens.surfaces[2].aspheric[3] = NAN;
+  EXPECT_THROW(validatePrescription(lens), InputError);
+}
+
+// The batched film trace of an aspheric lens is the one-ray trace, bit for bit.
+TEST(Asphere, BatchedTraceEqualsOneRayAtATime) {
+  LensPrescription rx = parseTableLens(
+      "50 5 1.5 60 20 k=-0.8 A4=-2e-6\n-50 2 20 A6=1e-9\nstop 2 18\n-50 40 1.5 60 20\n80 30 20 k=2\n",
+      "a.lens");
+  const LensSystem lens(rx);
+  SplitMix64 rng(2);
+  std::vector<LensRay> rays;
+  for (int i = 0; i < 301; ++i) {
+    const Vec3d o{(rng.uniform() - 0.5) * 20, (rng.uniform() - 0.5) * 20, lens.rearZ() + 30};
+    rays.push_back({o, Vec3d{(rng.uniform() - 0.5) * 20, (rng.uniform() - 0.5) * 20, lens.rearZ()} - o});
+  }
+  std::vector<std::optional<LensRay>> batched(rays.size());
+  lens.traceFromFilm(rays, batched);
+  int passed = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const auto one = lens.traceFromFilm(rays[i]);
+    ASSERT_EQ(one.has_value(), batched[i].has_value());
+    if (!one) continue;
+    ++passed;
+    EXPECT_TRUE(sameBits(one->origin, batched[i]->origin) && sameBits(one->direction, batched[i]->direction));
+  }
+  EXPECT_GT(passed, 30);
+}
+
+}  // namespace
+}  // namespace lensrt
