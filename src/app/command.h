@@ -20,5 +20,6 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context);
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context);
 CommandAction addDiffCommand(CLI::App& app, const CommandContext& context);
 CommandAction addCompareCommand(CLI::App& app, const CommandContext& context);
+CommandAction addMergeCommand(CLI::App& app, const CommandContext& context);
 
 }  // namespace lensrt

@@ -296,7 +296,8 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
                   "environment light: constant:V, constant:R,G,B or a lat-long .exr/.hdr map, e.g. --env "
                   "constant:1 (default: black)")
       ->check([](const std::string& s) { return checkEnvironment(s); });
-  cmd->add_option("--tile", args->tileSize, "tile size in pixels for scheduling (does not change the images)")
+  cmd->add_option("--tile-size", args->tileSize,
+                  "tile size in pixels for scheduling (does not change the images)")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
   addCameraOptions(*cmd, args->camera);

@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
   add(lensrt::addLensCommand);
   add(lensrt::addDiffCommand);
   add(lensrt::addCompareCommand);
+  add(lensrt::addMergeCommand);
 
   try {
     app.parse(argc, argv);

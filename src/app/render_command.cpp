@@ -3,7 +3,9 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -11,7 +13,9 @@
 #include <vector>
 
 #include "app/camera_options.h"
+#include "app/checkpoint.h"
 #include "app/command.h"
+#include "app/interrupt.h"
 #include "app/option_checks.h"
 #include "app/output_file.h"
 #include "app/render_job.h"
@@ -34,14 +38,21 @@ struct RenderArgs {
   std::string environment;
   std::vector<std::string> aovs;
   int tileSize = 16;
+  std::string crop;
+  std::string tile;
+  double checkpointSeconds = 0;  // 0: no checkpoints
+  std::string resume;
   bool quiet = false;
   CameraOptions camera;
 };
 
-// The image is held in memory as floats (and copied once more to write it):
+// The image is held in memory as floats (and copied once more to write it)
+// beside the pixels' running sums:
 // a --res this machine cannot hold is a usage error, not a crash mid-render.
 void checkImageFitsInMemory(int width, int height, std::size_t channels) {
-  const double bytes = 2.0 * double(width) * double(height) * double(channels) * sizeof(float);
+  // Two float copies of the image, and the running sums of every pixel.
+  const double bytes = double(width) * double(height) *
+                       (2.0 * double(channels) * sizeof(float) + PixelAccumulator::kStateBytes);
   const double physical = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
   constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
   if (physical > 0 && bytes > physical)
@@ -49,6 +60,49 @@ void checkImageFitsInMemory(int width, int height, std::size_t channels) {
         "--res", fmt::format("a {}x{} image with {} channels needs about {:.1f} GiB of memory, more than the "
                              "{:.1f} GiB this machine has",
                              width, height, channels, bytes / kGiB, physical / kGiB));
+}
+
+// --crop X0,X1,Y0,Y1 or --tile I/N: the part of the frame to render.
+PixelRegion partOfFrame(const RenderArgs& args, int width, int height) {
+  const PixelRegion frame = PixelRegion::wholeFrame(width, height);
+  if (!args.tile.empty()) {
+    const auto slash = args.tile.find('/');
+    const int index = std::stoi(args.tile.substr(0, slash)), count = std::stoi(args.tile.substr(slash + 1));
+    if (count > height)
+      throw CLI::ValidationError("--tile",
+                                 fmt::format("{} tiles is more than the image's {} rows", count, height));
+    return frameStrip(index, count, width, height);
+  }
+  if (!args.crop.empty()) {
+    int v[4];
+    std::sscanf(args.crop.c_str(), "%d,%d,%d,%d", &v[0], &v[1], &v[2], &v[3]);
+    const PixelRegion crop{v[0], v[1], v[2], v[3]};
+    if (!frame.contains(crop))
+      throw CLI::ValidationError(
+          "--crop", fmt::format("{} is not inside the {}x{} image (X1 and Y1 at most {} and {})", args.crop,
+                                width, height, width, height));
+    return crop;
+  }
+  return frame;
+}
+
+std::string checkCrop(const std::string& text) {
+  int v[4];
+  char end = 0;
+  if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &v[0], &v[1], &v[2], &v[3], &end) != 4)
+    return "expected X0,X1,Y0,Y1 in pixels, e.g. --crop 0,320,0,180";
+  if (v[0] < 0 || v[2] < 0 || v[1] <= v[0] || v[3] <= v[2])
+    return "expected 0 <= X0 < X1 and 0 <= Y0 < Y1 (X1, Y1 exclusive), got " + text;
+  return "";
+}
+
+std::string checkTile(const std::string& text) {
+  int index = 0, count = 0;
+  char end = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%c", &index, &count, &end) != 2)
+    return "expected I/N (tile I of N, I from 0), e.g. --tile 0/8";
+  if (count < 1 || index < 0 || index >= count) return "expected 0 <= I < N, got " + text;
+  return "";
 }
 
 int runRender(const RenderArgs& args, const CommandContext& context) {
@@ -69,9 +123,15 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   settings.aovs = parseAovs(args.aovs);
   // Everything that can be checked without rendering is checked first, so
   // that a long render never ends in an error.
-  checkOutputFile(args.output);
-  const std::string& envFile = sceneOptions.environment.file;
   std::error_code ec;
+  checkOutputFile(args.output);
+  const bool exr = std::filesystem::path(args.output).extension() == ".exr";
+  if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
+    throw CLI::ValidationError("--checkpoint/--resume",
+                               "need an .exr output (-o OUT.exr), the image that is continued");
+  if (!args.resume.empty() && !std::filesystem::exists(args.resume, ec))
+    throw InputError(args.resume, "no such checkpoint");
+  const std::string& envFile = sceneOptions.environment.file;
   if (!envFile.empty() && !std::filesystem::exists(envFile, ec))
     throw InputError(envFile, "environment map not found");
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile, ec))
@@ -94,20 +154,61 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   // 2. Scene, lights, camera, render.
   const RenderJob job(sceneOptions, warnings);
   checkImageFitsInMemory(job.width(), job.height(), filmChannels(settings.aovs).size());
+  const PixelRegion region = partOfFrame(args, job.width(), job.height());
+  settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
   holding = false;
   for (const std::string& message : held) print(message);
-  const RenderJobResult result = job.render(*camera, settings, args.quiet);
+  const ImageMetadata identity = job.identity(*camera, settings);
+  FilmState state =
+      args.resume.empty() ? FilmState(region, settings.aovs) : readCheckpoint(args.resume, identity, region);
+  if (state.samplesDone() > settings.samplesPerPixel)
+    throw CLI::ValidationError(
+        "--spp", fmt::format("{} has {} samples per pixel already, more than --spp {}", args.resume,
+                             state.samplesDone(), settings.samplesPerPixel));
 
-  // 3. Write.
-  writeOutputImage(args.output, result.output.image,
-                   job.metadata(*camera, settings, result, context.commandLine));
+  // Passes, checkpoints and signals (the handlers only while rendering).
+  const InterruptHandler interrupt;
+  const auto started = std::chrono::steady_clock::now();
+  auto lastCheckpoint = started;
+  const auto metadataOf = [&](const RenderJobResult& r) {
+    ImageMetadata m = job.metadata(*camera, settings, r, context.commandLine);
+    m["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
+    return m;
+  };
+  PassControl control;
+  control.stopRequested = [&] { return interrupt.signal() != 0; };
+  if (args.checkpointSeconds > 0)
+    control.afterPass = [&](const FilmState& s) {
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - lastCheckpoint).count() < args.checkpointSeconds) return;
+      RenderJobResult partial;
+      partial.output = renderOutput(*camera, s);
+      partial.seconds = std::chrono::duration<double>(now - started).count();
+      writeCheckpoint(args.output, s, partial.output.image, metadataOf(partial));
+      lastCheckpoint = std::chrono::steady_clock::now();
+    };
+  bool finished = false;
+  const RenderJobResult result = job.renderPasses(*camera, settings, state, control, args.quiet, finished);
+
+  // 3. Write: with the running sums when it can be continued.
+  if (args.checkpointSeconds > 0 || !finished)
+    writeCheckpoint(args.output, state, result.output.image, metadataOf(result));
+  else
+    writeOutputImage(args.output, result.output.image, metadataOf(result));
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
                args.scene, result.output.droppedSamples);
+  if (!finished) {
+    if (!args.quiet)
+      fmt::print(stderr, "lensrt: interrupted: wrote {} with {} of {} spp (continue with --resume {})\n",
+                 args.output, state.samplesDone(), settings.samplesPerPixel, args.output);
+    return interrupt.exitStatus();
+  }
   if (!args.quiet)
-    fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output, job.width(),
-               job.height(), args.spp, result.seconds, camera->describe());
+    fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output,
+               result.output.image.width, result.output.image.height, args.spp, result.seconds,
+               camera->describe());
   return 0;
 }
 
@@ -163,9 +264,29 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
          "albedo (albedo.R/G/B), variance (variance.R/G/B of the pixel mean), e.g. --aov depth,variance")
       ->delimiter(',')
       ->check(CLI::IsMember({"depth", "normal", "albedo", "variance"}));
-  cmd->add_option("--tile", args->tileSize, "tile size in pixels for scheduling (does not change the image)")
+  cmd->add_option("--tile-size", args->tileSize,
+                  "tile size in pixels for scheduling threads (does not change the image)")
       ->check(integerIn(1, 4096, "pixels"))
       ->capture_default_str();
+  auto* crop =
+      cmd->add_option("--crop", args->crop,
+                      "render only pixels X0 <= x < X1, Y0 <= y < Y1 of the frame into an EXR whose data "
+                      "window places them (join parts with lensrt merge), e.g. --crop 0,320,0,180")
+          ->check([](const std::string& s) { return checkCrop(s); });
+  cmd->add_option(
+         "--tile", args->tile,
+         "render only tile I (from 0) of N: horizontal strips top to bottom, heights differing by at "
+         "most a row (for job arrays; join with lensrt merge), e.g. --tile 0/8")
+      ->check([](const std::string& s) { return checkTile(s); })
+      ->excludes(crop);
+  cmd->add_option(
+         "--checkpoint", args->checkpointSeconds,
+         "every SECONDS, write the image so far to -o (atomically) with its running sums in OUT.sums, "
+         "so that --resume can continue it exactly, e.g. --checkpoint 600")
+      ->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--resume", args->resume,
+                  "continue the checkpoint CHECKPOINT.exr (same scene, camera and settings) to --spp, e.g. "
+                  "--resume out/a.exr");
   addCameraOptions(*cmd, args->camera);
   cmd->add_flag("-q,--quiet", args->quiet, "no progress, warnings or summary on stderr (errors still print)");
   return [args, context]() { return runRender(*args, context); };

@@ -9,9 +9,11 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/scene_digest.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "render/progress.h"
+#include "render/render_identity.h"
 #include "scene/camera_selection.h"
 #include "scene/gltf_loader.h"
 #include "scene/selection_error.h"
@@ -110,12 +112,43 @@ RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& se
   return result;
 }
 
+RenderJobResult RenderJob::renderPasses(const Camera& camera, const RenderSettings& settings,
+                                        FilmState& state, const PassControl& control, bool quiet,
+                                        bool& finished) const {
+  const auto start = std::chrono::steady_clock::now();
+  RenderJobResult result;
+  {
+    const int remaining = std::max(0, settings.samplesPerPixel - state.samplesDone());
+    Progress progress(state.region().pixelCount() * std::uint64_t(remaining),
+                      Progress::styleFor(stderr, quiet));
+    finished = lensrt::renderPasses(camera, *integrator_, settings, state, &control, &progress);
+  }
+  result.output = renderOutput(camera, state);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {
+  if (sceneDigest_.empty()) sceneDigest_ = sceneDigest(options_.scene, options_.environment.file);
+  std::string aovs;
+  for (const std::string& c : filmChannels(settings.aovs)) aovs += (aovs.empty() ? "" : ",") + c;
+  return {
+      {"lensrt:scene_sha256", sceneDigest_},
+      {"lensrt:camera", camera.describe()},
+      {"lensrt:settings", fmt::format("res={}x{} max_depth={} environment={} channels={}", width_, height_,
+                                      options_.maxDepth, environment_->describe(), aovs)},
+      {"lensrt:seed", std::to_string(settings.seed)},
+  };
+}
+
 ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& settings,
                                   const RenderJobResult& result, const std::string& commandLine) const {
+  const RenderOutput& out = result.output;
+  const std::uint64_t pixels = std::uint64_t(out.image.width) * std::uint64_t(out.image.height);
   ImageMetadata metadata{
-      {"lensrt:camera", camera.describe()},
-      {"lensrt:spp", std::to_string(settings.samplesPerPixel)},
-      {"lensrt:seed", std::to_string(settings.seed)},
+      {"lensrt:spp", std::to_string(pixels ? out.cameraSamples / pixels : 0)},
+      {"lensrt:camera_samples", std::to_string(out.cameraSamples)},
+      {"lensrt:blocked_camera_rays", std::to_string(out.blockedCameraRays)},
       {"lensrt:max_depth", std::to_string(options_.maxDepth)},
       {"lensrt:environment", environment_->describe()},
       {"lensrt:render_seconds", fmt::format("{:.3f}", result.seconds)},
@@ -124,6 +157,11 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& se
       {"lensrt:nan_samples", std::to_string(result.output.droppedSamples)},
       {"lensrt:camera_ray_efficiency", fmt::format("{:.4f}", result.output.cameraRayEfficiency())},
   };
+  if (!out.image.isWholeFrame())
+    metadata["lensrt:region"] = PixelRegion{out.image.originX, out.image.originX + out.image.width,
+                                            out.image.originY, out.image.originY + out.image.height}
+                                    .describe();
+  metadata.merge(identity(camera, settings));
   metadata.merge(cameraMetadata(camera));
   return metadata;
 }

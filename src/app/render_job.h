@@ -54,12 +54,24 @@ class RenderJob {
   // Renders with a progress bar on stderr unless `quiet`.
   RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
 
-  // The EXR header of a render: camera, settings, timing, efficiency.
+  // Continues `state` to settings.samplesPerPixel in passes steered by
+  // `control` (see renderPasses); `finished` says whether it got there.
+  RenderJobResult renderPasses(const Camera& camera, const RenderSettings& settings, FilmState& state,
+                               const PassControl& control, bool quiet, bool& finished) const;
+
+  // The metadata that identifies this render (render/render_identity.h):
+  // scene digest, camera, settings, seed. Every option that changes the
+  // image must show in it, so that parts and checkpoints of other renders
+  // are refused.
+  ImageMetadata identity(const Camera& camera, const RenderSettings& settings) const;
+
+  // The EXR header of a render: its identity, region, timing, efficiency.
   ImageMetadata metadata(const Camera& camera, const RenderSettings& settings, const RenderJobResult& result,
                          const std::string& commandLine) const;
 
  private:
   SceneOptions options_;
+  mutable std::string sceneDigest_;  // computed on first use
   int width_ = 0, height_ = 0;
   CameraDesc gltfCamera_;
   std::unique_ptr<Environment> environment_;

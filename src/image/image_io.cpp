@@ -119,6 +119,13 @@ void writeToTemporary(const fs::path& file, const fs::path& tmp, FileKind kind, 
     spec.channelnames = image.channels;
     spec.alpha_channel = image.channelIndex("A");
     spec.attribute("compression", "zip");
+    // A crop or tile: the data window inside the full frame's display window.
+    spec.x = image.originX;
+    spec.y = image.originY;
+    spec.full_x = 0;
+    spec.full_y = 0;
+    spec.full_width = image.fullWidth();
+    spec.full_height = image.fullHeight();
   } else {
     const std::vector<int> source = previewChannels(image);
     if (source.empty())
@@ -187,6 +194,14 @@ Image readImage(const fs::path& file, ImageMetadata* metadata) {
   if (spec.depth > 1) throw InputError(file.string(), "volume images are not supported");
 
   Image image(spec.width, spec.height, spec.channelnames);
+  // The data window relative to the display window's corner; a file whose
+  // display window is the data window is a whole frame.
+  image.originX = spec.x - spec.full_x;
+  image.originY = spec.y - spec.full_y;
+  if (spec.full_width != spec.width || spec.full_height != spec.height || image.originX || image.originY) {
+    image.frameWidth = spec.full_width;
+    image.frameHeight = spec.full_height;
+  }
   for (std::size_t c = 0; c < image.channels.size(); ++c)
     if (image.channels[c].empty()) image.channels[c] = "channel" + std::to_string(c);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))

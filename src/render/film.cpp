@@ -1,6 +1,7 @@
 #include "render/film.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace lensrt {
 
@@ -59,6 +60,45 @@ void PixelAccumulator::write(const AovSelection& aovs, float* out) const {
       const double v = n > 1 ? std::max(0.0, (sumSq_[k] - n * mean[k] * mean[k]) / (n - 1)) / n : 0.0;
       out[c++] = float(v);
     }
+}
+
+namespace {
+template <class T>
+void put(std::byte*& p, const T& v) {
+  std::memcpy(p, &v, sizeof v);
+  p += sizeof v;
+}
+template <class T>
+void get(const std::byte*& p, T& v) {
+  std::memcpy(&v, p, sizeof v);
+  p += sizeof v;
+}
+}  // namespace
+
+void PixelAccumulator::saveState(std::byte* out) const {
+  for (double v : sum_) put(out, v);
+  for (double v : sumSq_) put(out, v);
+  put(out, count_);
+  put(out, hits_);
+  put(out, dropped_);
+  put(out, distance_);
+  for (double v : albedo_) put(out, v);
+  put(out, normal_.x);
+  put(out, normal_.y);
+  put(out, normal_.z);
+}
+
+void PixelAccumulator::loadState(const std::byte* in) {
+  for (double& v : sum_) get(in, v);
+  for (double& v : sumSq_) get(in, v);
+  get(in, count_);
+  get(in, hits_);
+  get(in, dropped_);
+  get(in, distance_);
+  for (double& v : albedo_) get(in, v);
+  get(in, normal_.x);
+  get(in, normal_.y);
+  get(in, normal_.z);
 }
 
 }  // namespace lensrt

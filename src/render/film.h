@@ -17,6 +17,7 @@
 // and counted.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,6 +44,12 @@ class PixelAccumulator {
   std::uint64_t droppedSamples() const { return dropped_; }
   // Writes this pixel's channels (layout of filmChannels) to `out`.
   void write(const AovSelection& aovs, float* out) const;
+
+  // The running sums as bytes (native byte order), so a checkpoint can
+  // continue them exactly: doubles stay doubles, nothing is rounded.
+  static constexpr std::size_t kStateBytes = 13 * 8 + 3 * 4;
+  void saveState(std::byte* out) const;
+  void loadState(const std::byte* in);
 
  private:
   double sum_[3] = {0, 0, 0};

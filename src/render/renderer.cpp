@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -18,26 +19,21 @@ namespace {
 // Camera samples per generateRays call: enough for a camera to batch, few
 // enough to stay in cache whatever the spp.
 constexpr std::uint64_t kCameraBatch = 256;
-}  // namespace
 
-RenderOutput renderImage(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
-                         Progress* progress) {
+// Samples [first, last) of every pixel of the state's region.
+void renderPass(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
+                FilmState& state, std::uint32_t firstSample, std::uint32_t lastSample, Progress* progress) {
   const FilmGeometry& film = camera.film();
-  if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("film size must be positive");
-  if (settings.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+  const PixelRegion region = state.region();
   const int tile = std::max(1, settings.tileSize);
-  const int tilesX = (film.width + tile - 1) / tile, tilesY = (film.height + tile - 1) / tile;
-
-  RenderOutput out;
-  out.image = Image(film.width, film.height, filmChannels(settings.aovs));
-  std::atomic<std::uint64_t> dropped{0};
+  const int tilesX = (region.width() + tile - 1) / tile, tilesY = (region.height() + tile - 1) / tile;
+  const std::uint32_t spp = lastSample - firstSample;
   std::atomic<std::uint64_t> blocked{0};
-  const std::uint32_t spp = std::uint32_t(settings.samplesPerPixel);
 
   const auto renderTile = [&](int t) {
-    const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
-    const int x1 = std::min(x0 + tile, film.width), y1 = std::min(y0 + tile, film.height);
-    std::uint64_t tileDropped = 0, tileBlocked = 0;
+    const int x0 = region.x0 + (t % tilesX) * tile, y0 = region.y0 + (t / tilesX) * tile;
+    const int x1 = std::min(x0 + tile, region.x1), y1 = std::min(y0 + tile, region.y1);
+    std::uint64_t tileBlocked = 0;
     // Camera rays are made kCameraBatch samples per call (the samples of a
     // tile row, pixel by pixel, in order), so a camera can trace them together
     // (the full lens does); each still depends only on (seed, pixel, sample index).
@@ -46,15 +42,15 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
     std::vector<CameraSample> samples(batch);
     std::vector<std::optional<CameraRay>> rays(batch);
     for (int y = y0; y < y1; ++y) {
-      PixelAccumulator acc;
       for (std::uint64_t first = 0; first < rowSamples; first += batch) {
         const std::size_t n = std::size_t(std::min<std::uint64_t>(batch, rowSamples - first));
         const auto pixelOf = [&](std::uint64_t j) {
           return std::uint64_t(y) * std::uint64_t(film.width) + std::uint64_t(x0) + j / spp;
         };
+        const auto sampleOf = [&](std::uint64_t j) { return firstSample + std::uint32_t(j % spp); };
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
-          const Sampler sampler(settings.seed, pixelOf(j), std::uint32_t(j % spp));
+          const Sampler sampler(settings.seed, pixelOf(j), sampleOf(j));
           const Vec2f offset = sampler.get2D(kDimFilm);
           CameraSample& cs = samples[k];
           cs.film = {float(x0 + int(j / spp)) + offset.x, float(y) + offset.y};
@@ -65,23 +61,17 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
+          PixelAccumulator& acc = state.pixel(x0 + int(j / spp), y);
           const std::optional<CameraRay>& cr = rays[k];
           if (!cr) {
             acc.addBlocked();
             ++tileBlocked;
           } else {
-            acc.add(integrator.trace(cr->ray, Sampler(settings.seed, pixelOf(j), std::uint32_t(j % spp))),
-                    cr->weight);
-          }
-          if ((j + 1) % spp == 0) {  // the pixel's last sample
-            acc.write(settings.aovs, &out.image.at(x0 + int(j / spp), y, 0));
-            tileDropped += acc.droppedSamples();
-            acc = PixelAccumulator();
+            acc.add(integrator.trace(cr->ray, Sampler(settings.seed, pixelOf(j), sampleOf(j))), cr->weight);
           }
         }
       }
     }
-    dropped.fetch_add(tileDropped, std::memory_order_relaxed);
     blocked.fetch_add(tileBlocked, std::memory_order_relaxed);
     if (progress) progress->add(std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * spp);
   };
@@ -93,10 +83,58 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
       for (int t = r.begin(); t != r.end(); ++t) renderTile(t);
     });
   });
-  out.droppedSamples = dropped.load();
-  out.cameraSamples = std::uint64_t(film.width) * std::uint64_t(film.height) * spp;
-  out.blockedCameraRays = blocked.load();
+  state.blockedCameraRays += blocked.load();
+  state.setSamplesDone(int(lastSample));
+}
+
+}  // namespace
+
+bool renderPasses(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
+                  FilmState& state, const PassControl* control, Progress* progress) {
+  const FilmGeometry& film = camera.film();
+  if (!PixelRegion::wholeFrame(film.width, film.height).contains(state.region()))
+    throw std::invalid_argument("the region " + state.region().describe() + " is not inside the " +
+                                std::to_string(film.width) + "x" + std::to_string(film.height) + " frame");
+  const int target = settings.samplesPerPixel;
+  if (!control) {
+    if (state.samplesDone() < target)
+      renderPass(camera, integrator, settings, state, std::uint32_t(state.samplesDone()),
+                 std::uint32_t(target), progress);
+    return true;
+  }
+  // A stop is honoured after a pass, so the pass in flight (the first one
+  // included) always finishes and the image has whole passes.
+  int passSpp = 1;
+  while (state.samplesDone() < target) {
+    const int first = state.samplesDone(), last = std::min(target, first + passSpp);
+    const auto start = std::chrono::steady_clock::now();
+    renderPass(camera, integrator, settings, state, std::uint32_t(first), std::uint32_t(last), progress);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (seconds * 2 < control->passSeconds && passSpp < (1 << 20)) passSpp *= 2;
+    if (state.samplesDone() >= target) break;
+    if (control->stopRequested && control->stopRequested()) return false;
+    if (control->afterPass) control->afterPass(state);
+  }
+  return true;
+}
+
+RenderOutput renderOutput(const Camera& camera, const FilmState& state) {
+  RenderOutput out;
+  out.image = state.image(camera.film().width, camera.film().height);
+  out.droppedSamples = state.droppedSamples();
+  out.cameraSamples = state.region().pixelCount() * std::uint64_t(state.samplesDone());
+  out.blockedCameraRays = state.blockedCameraRays;
   return out;
+}
+
+RenderOutput renderImage(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
+                         Progress* progress) {
+  const FilmGeometry& film = camera.film();
+  if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("film size must be positive");
+  if (settings.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+  FilmState state(settings.region.value_or(PixelRegion::wholeFrame(film.width, film.height)), settings.aovs);
+  renderPasses(camera, integrator, settings, state, nullptr, progress);
+  return renderOutput(camera, state);
 }
 
 }  // namespace lensrt

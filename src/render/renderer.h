@@ -1,30 +1,38 @@
-// Renders a whole image: the film is cut into square tiles that TBB runs in
-// parallel (in an arena of `threads` workers); each pixel's samples are traced
-// and summed in sample order by one task, so the image is bit-identical for
-// any thread count and any tile size.
+// Renders an image, or a region of it: the region is cut into square tiles
+// that TBB runs in parallel (in an arena of `threads` workers); each pixel's
+// samples are traced and summed in sample order by one task, so the image is
+// bit-identical for any thread count and any tile size. A render may run in
+// passes of samples (all pixels get samples [a, b), then [b, c), ...): the
+// sums live in a FilmState between passes, so the passes, a checkpoint and a
+// resume change no bit either.
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 
 #include "camera/camera.h"
 #include "image/image.h"
 #include "render/film.h"
+#include "render/film_state.h"
 #include "render/integrator.h"
+#include "render/pixel_region.h"
 #include "render/progress.h"
 
 namespace lensrt {
 
 struct RenderSettings {
-  int samplesPerPixel = 16;
+  int samplesPerPixel = 16;  // the total to reach (a resumed render has done some)
   std::uint64_t seed = 0;
   int threads = 0;  // 0: all cores
   int tileSize = 16;
   AovSelection aovs;
+  std::optional<PixelRegion> region;  // none: the whole frame
 };
 
 struct RenderOutput {
-  Image image;                       // channels per filmChannels(aovs), size of camera.film()
-  std::uint64_t droppedSamples = 0;  // NaN / infinite radiance
+  Image image;  // channels per filmChannels(aovs), the region's size placed in camera.film()
+  std::uint64_t droppedSamples = 0;     // NaN / infinite radiance
   std::uint64_t cameraSamples = 0;      // width x height x spp
   std::uint64_t blockedCameraRays = 0;  // samples the optics blocked (vignetting)
   // Fraction of camera samples that left the lens into the scene.
@@ -39,5 +47,26 @@ inline constexpr float kWavelengthMaxNm = 780.0f;
 
 RenderOutput renderImage(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
                          Progress* progress = nullptr);
+
+// How a render in passes is steered from outside (the command line).
+struct PassControl {
+  // Polled after each pass: true stops there.
+  std::function<bool()> stopRequested;
+  // Called after each pass but the last one (e.g. to write a checkpoint).
+  std::function<void(const FilmState&)> afterPass;
+  // Passes start at 1 spp and double while a pass takes less than this, so
+  // a stop request is honoured within about this many seconds.
+  double passSeconds = 1.0;
+};
+
+// Adds samples [state.samplesDone(), settings.samplesPerPixel) to every
+// pixel of state.region(), in passes. Returns false when stopped early (the
+// state then holds whole passes: every pixel has state.samplesDone() samples).
+// Without a control, one pass.
+bool renderPasses(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
+                  FilmState& state, const PassControl* control = nullptr, Progress* progress = nullptr);
+
+// The output of a finished (or stopped) state.
+RenderOutput renderOutput(const Camera& camera, const FilmState& state);
 
 }  // namespace lensrt

@@ -45,7 +45,7 @@ TEST(RenderCli, ThreadCountAndTilingDoNotChangeTheImage) {
     return readImage(dir / out);
   };
   const Image a = run("a.exr", {"--threads", "1"});
-  const Image b = run("b.exr", {"--threads", "2", "--tile", "7"});
+  const Image b = run("b.exr", {"--threads", "2", "--tile-size", "7"});
   ASSERT_EQ(a.channels, b.channels);
   ASSERT_EQ(a.pixels.size(), b.pixels.size());
   ASSERT_FALSE(a.pixels.empty());

@@ -1,0 +1,98 @@
+#include "render/film_state.h"
+
+#include <array>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace lensrt {
+namespace {
+
+constexpr std::array<char, 8> kMagic{'L', 'R', 'T', 'S', 'U', 'M', 'S', '1'};
+// magic, x0 x1 y0 y1, samples done, AOV bits (int32 each), blocked rays (uint64).
+constexpr std::size_t kHeaderBytes = kMagic.size() + 6 * 4 + 8;
+
+std::int32_t aovBits(const AovSelection& a) {
+  return (a.depth ? 1 : 0) | (a.normal ? 2 : 0) | (a.albedo ? 4 : 0) | (a.variance ? 8 : 0);
+}
+
+}  // namespace
+
+FilmState::FilmState(const PixelRegion& region, const AovSelection& aovs)
+    : region_(region), aovs_(aovs), pixels_(region.empty() ? 0 : region.pixelCount()) {
+  if (region.empty()) throw std::invalid_argument("the region to render is empty");
+}
+
+std::uint64_t FilmState::droppedSamples() const {
+  std::uint64_t n = 0;
+  for (const PixelAccumulator& p : pixels_) n += p.droppedSamples();
+  return n;
+}
+
+Image FilmState::image(int frameWidth, int frameHeight) const {
+  Image out(region_.width(), region_.height(), filmChannels(aovs_));
+  out.originX = region_.x0;
+  out.originY = region_.y0;
+  if (!(region_ == PixelRegion::wholeFrame(frameWidth, frameHeight))) {
+    out.frameWidth = frameWidth;
+    out.frameHeight = frameHeight;
+  }
+  const std::size_t channels = out.channelCount();
+  for (std::size_t i = 0; i < pixels_.size(); ++i) pixels_[i].write(aovs_, &out.pixels[i * channels]);
+  return out;
+}
+
+std::vector<std::byte> FilmState::toBytes() const {
+  std::vector<std::byte> bytes(kHeaderBytes + pixels_.size() * PixelAccumulator::kStateBytes);
+  std::byte* p = bytes.data();
+  std::memcpy(p, kMagic.data(), kMagic.size());
+  p += kMagic.size();
+  for (std::int32_t v : {std::int32_t(region_.x0), std::int32_t(region_.x1), std::int32_t(region_.y0),
+                         std::int32_t(region_.y1), std::int32_t(samplesDone_), aovBits(aovs_)}) {
+    std::memcpy(p, &v, 4);
+    p += 4;
+  }
+  std::memcpy(p, &blockedCameraRays, 8);
+  p += 8;
+  for (const PixelAccumulator& px : pixels_) {
+    px.saveState(p);
+    p += PixelAccumulator::kStateBytes;
+  }
+  return bytes;
+}
+
+FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
+  if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic.data(), kMagic.size()) != 0)
+    throw std::invalid_argument("not a lensrt running-sums file");
+  const std::byte* p = bytes.data() + kMagic.size();
+  std::int32_t v[6];
+  for (std::int32_t& x : v) {
+    std::memcpy(&x, p, 4);
+    p += 4;
+  }
+  std::uint64_t blocked = 0;
+  std::memcpy(&blocked, p, 8);
+  p += 8;
+  const PixelRegion region{v[0], v[1], v[2], v[3]};
+  if (region.empty() || region.x0 < 0 || region.y0 < 0 || v[4] < 0 || v[5] < 0 || v[5] > 15)
+    throw std::invalid_argument("the running-sums file's header is corrupt");
+  AovSelection aovs;
+  aovs.depth = v[5] & 1;
+  aovs.normal = v[5] & 2;
+  aovs.albedo = v[5] & 4;
+  aovs.variance = v[5] & 8;
+  const std::uint64_t expected = kHeaderBytes + region.pixelCount() * PixelAccumulator::kStateBytes;
+  if (bytes.size() != expected)
+    throw std::invalid_argument("the running-sums file has " + std::to_string(bytes.size()) +
+                                " bytes, its header says " + std::to_string(expected));
+  FilmState state(region, aovs);
+  state.samplesDone_ = v[4];
+  state.blockedCameraRays = blocked;
+  for (PixelAccumulator& px : state.pixels_) {
+    px.loadState(p);
+    p += PixelAccumulator::kStateBytes;
+  }
+  return state;
+}
+
+}  // namespace lensrt

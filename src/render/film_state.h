@@ -1,0 +1,51 @@
+// The running per-pixel sums of a render in progress over a region of the
+// frame, with the samples per pixel done so far. Passes of samples add to
+// it in sample order, so a render cut into passes (or stopped, saved and
+// resumed) sums exactly what an uninterrupted one sums: the same bits.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "image/image.h"
+#include "render/film.h"
+#include "render/pixel_region.h"
+
+namespace lensrt {
+
+class FilmState {
+ public:
+  FilmState(const PixelRegion& region, const AovSelection& aovs);
+
+  const PixelRegion& region() const { return region_; }
+  const AovSelection& aovs() const { return aovs_; }
+  int samplesDone() const { return samplesDone_; }
+  void setSamplesDone(int spp) { samplesDone_ = spp; }
+  // Frame coordinates, inside region().
+  PixelAccumulator& pixel(int x, int y) {
+    return pixels_[std::size_t(y - region_.y0) * std::size_t(region_.width()) + std::size_t(x - region_.x0)];
+  }
+
+  std::uint64_t droppedSamples() const;
+  std::uint64_t blockedCameraRays = 0;
+
+  // The means so far: channels per filmChannels(aovs), the region's size,
+  // placed in a frame of frameWidth x frameHeight.
+  Image image(int frameWidth, int frameHeight) const;
+
+  // A self-describing byte image of the state (a header with the region,
+  // AOVs and samples done, then every pixel's sums); fromBytes throws
+  // std::invalid_argument with a one-line reason for anything malformed.
+  std::vector<std::byte> toBytes() const;
+  static FilmState fromBytes(std::span<const std::byte> bytes);
+
+ private:
+  PixelRegion region_;
+  AovSelection aovs_;
+  int samplesDone_ = 0;
+  std::vector<PixelAccumulator> pixels_;
+};
+
+}  // namespace lensrt
