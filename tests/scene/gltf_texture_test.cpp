@@ -26,7 +26,8 @@ SceneDesc load(const GltfBuilder& b, Warnings& w) {
 // The 2x1 test PNG: texel 0 alpha 0 (u < 0.5), texel 1 alpha 1.
 void addPngImage(GltfBuilder& b, const json& sampler) {
   b.doc["images"] = {{{"uri", std::string("data:image/png;base64,") + test::kTwoTexelPngBase64}}};
-  b.doc["samplers"] = {sampler};
+  // json::array: a braced single json is an array under GCC but a copy under clang.
+  b.doc["samplers"] = json::array({sampler});
   b.doc["textures"] = {{{"source", 0}, {"sampler", 0}}};
 }
 
