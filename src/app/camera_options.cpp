@@ -151,6 +151,11 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
       ->check(checkWith(parseShutter, "SECONDS"));
   cmd.add_option("--iso", o.iso, "ISO speed for --exposure physical (default 100)")
       ->check(numberIn(1.0, 1e7, "ISO speed"));
+  cmd.add_option(
+         "--dispersion", o.dispersion,
+         "on (default): --camera lens traces each sample at its own wavelength when the lens has Abbe "
+         "numbers (colour fringes); off: every ray at the d line (587.6 nm)")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {
@@ -308,6 +313,7 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   p.fNumber = fNumber;
   p.focusMetres = focusM;
   p.aperture = aperture;
+  p.dispersion = o.dispersion == "on";
   return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
 }
 
@@ -335,6 +341,7 @@ ImageMetadata cameraMetadata(const Camera& camera) {
       // Where the camera stood, so another renderer can take the same view
       // (tools/validate-cycles does): glTF world space, metres, row by row.
       {"lensrt:world_from_camera", matrixText(camera.worldFromCamera().matrix())},
+      {"lensrt:dispersion", i.dispersion ? "on" : "off"},
   };
 }
 

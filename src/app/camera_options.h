@@ -5,6 +5,7 @@
 //   --focus METRES|auto|inf   --focus-pixel X,Y   --sensor WxH|NAME
 //   --blades N   --blade-rotation DEG   --focal-length MM
 //   --exposure normalized|physical   --shutter SECONDS   --iso N
+//   --dispersion on|off
 //
 // Bad values are usage errors (CLI::ValidationError naming the flag, exit 2).
 #pragma once
@@ -37,6 +38,7 @@ struct CameraOptions {
   std::string exposure = "normalized";
   std::string shutter;  // seconds, "0.01" or "1/100"; empty: 1/100
   std::optional<double> iso;
+  std::string dispersion = "on";  // the full lens traces each sample at its wavelength
   std::filesystem::path lensDir;  // the library; addCameraOptions sets the installed one
 };
 
@@ -65,7 +67,7 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& options, const CameraDes
                                    FilmGeometry film, const HitDistance& hitDistance, Warnings& warnings);
 
 // lensrt:camera_model, lensrt:lens, lensrt:f_number, lensrt:focus_m,
-// lensrt:focal_length_mm, lensrt:sensor_mm, lensrt:exposure.
+// lensrt:focal_length_mm, lensrt:sensor_mm, lensrt:exposure, lensrt:dispersion.
 ImageMetadata cameraMetadata(const Camera& camera);
 
 }  // namespace lensrt

@@ -16,6 +16,7 @@
 #include "app/option_checks.h"
 #include "core/constants.h"
 #include "core/warnings.h"
+#include "optics/chromatic.h"
 #include "optics/exit_pupil.h"
 #include "optics/focus.h"
 #include "optics/lens_readers.h"
@@ -122,6 +123,9 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
   const ExitPupilBounds bounds(lens, lens.rearZ() + filmDistance, halfDiagonal);
   const PupilEfficiency eff = measurePupilEfficiency(lens, bounds, sensor.width, sensor.height, 20000);
   const LensPrescription& rx = lens.prescription();
+  // Chromatic aberration (0 without Abbe numbers): lateral at the half diagonal.
+  const double axialColor = axialColorMm(rx);
+  const std::optional<LateralColor> lateral = lateralColor(lens, halfDiagonal);
 
   if (o.json) {
     nlohmann::json j;
@@ -165,6 +169,9 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
     j["hyperfocal_distance_m"] = hyperfocal / 1000.0;
     j["depth_of_field_m"] = {{"near", finiteOrNull(nearMm / 1000.0)}, {"far", finiteOrNull(farMm / 1000.0)}};
     j["exit_pupil_efficiency"] = eff.efficiency();
+    j["dispersion_data"] = hasDispersion(rx);
+    j["axial_color_mm"] = axialColor;
+    j["lateral_color_um"] = lateral ? nlohmann::json(lateral->um()) : nlohmann::json(nullptr);
     j["warnings"] = warningList;
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -201,6 +208,12 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
   fmt::print("  depth of field        {} to {}\n", metresText(nearMm), metresText(farMm));
   fmt::print("  exit pupil efficiency {:.1f}% of rays sampled from the pupil bounds pass\n",
              100.0 * eff.efficiency());
+  if (hasDispersion(rx))
+    fmt::print(
+        "  chromatic aberration  axial {:.4f} mm (BFL at C minus F), lateral {} (F minus C at {:.2f} mm)\n",
+        axialColor, lateral ? fmt::format("{:.2f} um", lateral->um()) : "n/a", halfDiagonal);
+  else
+    fmt::print("  chromatic aberration  none modelled (no Abbe numbers)\n");
   return 0;
 }
 

@@ -31,7 +31,7 @@ struct FilmGeometry {
 struct CameraSample {
   Vec2f film;                  // raster position in pixels, continuous
   Vec2f lens;                  // uniform in [0,1)^2: aperture / exit-pupil sample
-  float wavelengthNm = 550.f;  // carried for dispersion (Abbe numbers); 550 nm = n_d-ish
+  float wavelengthNm = 550.f;  // nm: the wavelength a dispersive camera traces this sample at
 };
 
 struct CameraRay {
@@ -53,7 +53,8 @@ struct CameraInfo {
   double fNumber = 0.0;      // 0: no aperture (pinhole)
   double focusMetres = 0.0;  // from the entrance pupil; +infinity at infinity; 0: none (pinhole)
   double focalLengthMm = 0.0;
-  std::string exposure;  // e.g. "normalized" or "physical 0.01s ISO100"
+  std::string exposure;     // e.g. "normalized" or "physical 0.01s ISO100"
+  bool dispersion = false;  // each sample traced at its own wavelength (tracesWavelengths)
 };
 
 // A focus distance for describe(): "2m", "infinity".
@@ -91,6 +92,10 @@ class Camera {
         r->ray.direction = normalize(r->ray.direction);
       }
   }
+
+  // True when rays depend on CameraSample::wavelengthNm (dispersion): the
+  // renderer then weights each sample's RGB by its wavelength's response.
+  virtual bool tracesWavelengths() const { return false; }
 
   // Model name and parameters for EXR metadata and reports, e.g. "pinhole yfov=39.6deg".
   virtual std::string describe() const = 0;

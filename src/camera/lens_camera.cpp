@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "camera/film_mapping.h"
+#include "optics/chromatic.h"
 #include "optics/focus.h"
 
 namespace lensrt {
@@ -14,7 +15,10 @@ namespace lensrt {
 LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& film,
                        const LensPrescription& prescription, const LensCameraParams& params,
                        const Exposure& exposure, Warnings& warnings)
-    : Camera(worldFromCamera, film), params_(params), exposure_(exposure) {
+    : Camera(worldFromCamera, film),
+      params_(params),
+      exposure_(exposure),
+      dispersion_(params.dispersion && hasDispersion(prescription)) {
   const ParaxialData open = computeParaxial(prescription);
   double n = params.fNumber > 0.0 ? params.fNumber : open.fNumber;
   // A polygon of the f-number's area needs a round stop as wide as its corners.
@@ -39,7 +43,8 @@ std::string LensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "lens %s f=%.4gmm f/%.3g focus=%s aperture=%s",
                 lens_->prescription().name.c_str(), lens_->paraxial().efl, fNumber_,
                 focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
-  return buf;
+  // Part of the render's identity (merge, resume): on and off differ.
+  return std::string(buf) + (dispersion_ ? " dispersion=on" : "");
 }
 
 CameraInfo LensCamera::info() const {
@@ -48,7 +53,8 @@ CameraInfo LensCamera::info() const {
           fNumber_,
           params_.focusMetres,
           lens_->paraxial().efl,
-          lensrt::describe(exposure_)};
+          lensrt::describe(exposure_),
+          dispersion_};
 }
 
 namespace {
@@ -104,17 +110,17 @@ std::optional<CameraRay> LensCamera::cameraRay(const std::optional<LensRay>& out
 std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& s) const {
   const PupilRay pr = pupilRay(s);
   if (pr.weight == 0.0) return std::nullopt;
-  const double wavelength = params_.dispersion ? double(s.wavelengthNm) : kWavelengthDNm;
+  const double wavelength = dispersion_ ? double(s.wavelengthNm) : kWavelengthDNm;
   return cameraRay(traceLens(pr.ray, wavelength), pr.weight);
 }
 
 void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
                                          std::span<std::optional<CameraRay>> out) const {
-  if (polygon_ || params_.dispersion) return Camera::generateCameraSpaceRays(samples, out);
+  if (polygon_) return Camera::generateCameraSpaceRays(samples, out);
   // In chunks on the stack: the lens traces a chunk's rays together.
   constexpr std::size_t kChunk = 4 * LensSystem::kTraceLanes;
   std::array<LensRay, kChunk> rays;
-  std::array<double, kChunk> weights;
+  std::array<double, kChunk> weights, wavelengths;
   std::array<std::optional<LensRay>, kChunk> traced;
   for (std::size_t first = 0; first < samples.size(); first += kChunk) {
     const std::size_t n = std::min(kChunk, samples.size() - first);
@@ -122,8 +128,13 @@ void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
       const PupilRay pr = pupilRay(samples[first + i]);
       rays[i] = pr.ray;  // a zero direction fails the trace: blocked
       weights[i] = pr.weight;
+      wavelengths[i] = samples[first + i].wavelengthNm;
     }
-    lens_->traceFromFilm(std::span(rays).first(n), std::span(traced).first(n));
+    if (dispersion_)
+      lens_->traceFromFilm(std::span(rays).first(n), std::span(wavelengths).first(n),
+                           std::span(traced).first(n));
+    else
+      lens_->traceFromFilm(std::span(rays).first(n), std::span(traced).first(n));
     for (std::size_t i = 0; i < n; ++i) out[first + i] = cameraRay(traced[i], weights[i]);
   }
 }

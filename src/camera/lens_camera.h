@@ -15,9 +15,9 @@ struct LensCameraParams {
   double fNumber = 0.0;            // <= 0: the lens wide open
   double focusMetres = kInfinity;  // from the entrance pupil; +infinity allowed
   ApertureShape aperture;          // blades cut the (round) stop to a polygon of the f-number's area
-  // Trace each sample at its own wavelength (dispersion). Off: every ray at
-  // the d line, where the focus is computed (the renderer is RGB, so sampled
-  // wavelengths only blur).
+  // Trace each sample at its own wavelength (dispersion) when the lens has
+  // dispersion data (chromatic.h: hasDispersion). Off: every ray at the d
+  // line, where the focus is computed. The CLI turns it on by default.
   bool dispersion = false;
   int pupilIntervals = 64;  // exit pupil bounds resolution over the film radius
 };
@@ -40,6 +40,7 @@ class LensCamera final : public Camera {
 
   std::string describe() const override;
   CameraInfo info() const override;
+  bool tracesWavelengths() const override { return dispersion_; }
   const LensSystem& lens() const { return *lens_; }
   const ExitPupilBounds& bounds() const { return *bounds_; }
   double fNumber() const { return fNumber_; }
@@ -79,6 +80,7 @@ class LensCamera final : public Camera {
   double filmZ_ = 0.0;
   double entrancePupilZ_ = 0.0;
   double scale_ = 0.0;  // exposure scale
+  bool dispersion_ = false;
 };
 
 }  // namespace lensrt

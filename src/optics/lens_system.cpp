@@ -182,7 +182,7 @@ void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::opt
   if (out.size() != rays.size()) throw std::invalid_argument("traceFromFilm: as many outputs as rays");
   // The vector step knows only spheres: aspheric lenses take the one-lane
   // loop below, which calls the same step() as the one-ray trace.
-  if (trace_lanes::available() && !hasAspheres_) return traceFromFilmVectorized(rays, out);
+  if (trace_lanes::available() && !hasAspheres_) return traceFromFilmVectorized(rays, {}, out);
   const int count = surfaceCount();
   const TraceSurface* const surfaces = surfaces_.data();
   for (std::size_t first = 0; first < rays.size(); first += kTraceLanes) {
@@ -207,9 +207,18 @@ void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::opt
   }
 }
 
+void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
+                               std::span<std::optional<LensRay>> out) const {
+  if (out.size() != rays.size() || wavelengthsNm.size() != rays.size())
+    throw std::invalid_argument("traceFromFilm: as many outputs and wavelengths as rays");
+  if (trace_lanes::available() && !hasAspheres_) return traceFromFilmVectorized(rays, wavelengthsNm, out);
+  for (std::size_t i = 0; i < rays.size(); ++i) out[i] = trace<true>(rays[i], wavelengthsNm[i], nullptr);
+}
+
 // The same trace with spherical surfaces stepped in vector registers
-// (trace_lanes); flat ones (the stop, windows) one lane at a time.
-void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays,
+// (trace_lanes); flat ones (the stop, windows) one lane at a time. With
+// wavelengths, each lane's index ratios are computed as trace() does.
+void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
                                          std::span<std::optional<LensRay>> out) const {
   static_assert(kTraceLanes == trace_lanes::kLanes);
   std::vector<trace_lanes::Sphere> spheres(surfaces_.size());
@@ -228,16 +237,39 @@ void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays,
       L.ox[l] = r.origin.x, L.oy[l] = r.origin.y, L.oz[l] = r.origin.z;
       L.dx[l] = d.x, L.dy[l] = d.y, L.dz[l] = d.z;
     }
+    // Per lane: the index on the film side of the next surface (trace()'s nFrom).
+    const bool spectral = !wavelengthsNm.empty();
+    std::array<double, kTraceLanes> wavelength{}, nFrom{}, eta{};
+    std::array<bool, kTraceLanes> dLine{};
+    if (spectral)
+      for (std::size_t l = 0; l < lanes; ++l) {
+        wavelength[l] = wavelengthsNm[first + l];
+        dLine[l] = wavelength[l] == kWavelengthDNm;
+        nFrom[l] = dLine[l] ? 1.0 : surfaces_.back().after.index(wavelength[l]);
+      }
     for (int i = surfaceCount() - 1; i >= 0; --i) {
       const TraceSurface& s = surfaces_[i];
+      if (spectral)
+        for (std::size_t l = 0; l < kTraceLanes; ++l) {
+          if (l >= lanes || dLine[l]) {
+            eta[l] = spheres[i].eta;
+            continue;
+          }
+          const double n1 = nFrom[l];
+          nFrom[l] = i > 0 ? surfaces_[i - 1].after.index(wavelength[l]) : 1.0;
+          eta[l] = !s.isStop && n1 != nFrom[l] ? n1 / nFrom[l] : 0.0;
+        }
       if (s.radius != 0.0) {
-        trace_lanes::sphereStep(spheres[i], L);
+        if (spectral)
+          trace_lanes::sphereStep(spheres[i], eta, L);
+        else
+          trace_lanes::sphereStep(spheres[i], L);
         continue;
       }
       for (std::size_t l = 0; l < lanes; ++l) {
         if (!L.alive[l]) continue;
         Vec3d o{L.ox[l], L.oy[l], L.oz[l]}, d{L.dx[l], L.dy[l], L.dz[l]};
-        L.alive[l] = step<true>(s, spheres[i].eta, o, d, nullptr);
+        L.alive[l] = step<true>(s, spectral ? eta[l] : spheres[i].eta, o, d, nullptr);
         L.ox[l] = o.x, L.oy[l] = o.y, L.oz[l] = o.z;
         L.dx[l] = d.x, L.dy[l] = d.y, L.dz[l] = d.z;
       }

@@ -50,6 +50,10 @@ class LensSystem {
   // bit for bit, but several at a time (kTraceLanes), whose independent
   // square-root chains the CPU overlaps: about twice the throughput.
   void traceFromFilm(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const;
+  // The same with each ray at its own wavelength (dispersion): bit for bit
+  // traceFromFilm(rays[i], wavelengthsNm[i]).
+  void traceFromFilm(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
+                     std::span<std::optional<LensRay>> out) const;
   static constexpr std::size_t kTraceLanes = 8;
 
   std::optional<LensRay> traceFromScene(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
@@ -83,7 +87,9 @@ class LensSystem {
   template <bool kFromFilm>
   static bool step(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d, std::vector<Vec3d>* path);
   // The batched trace on CPUs with vector units (optics/trace_lanes.h).
-  void traceFromFilmVectorized(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const;
+  // Empty wavelengthsNm: every ray at the d line.
+  void traceFromFilmVectorized(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
+                               std::span<std::optional<LensRay>> out) const;
   template <bool kFromFilm>
   std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path) const;
 

@@ -37,8 +37,10 @@ LENSRT_AVX inline V sqrt(V v) {
 }
 
 // Mirrors LensSystem::step<true> line by line; `ok` replaces its early returns.
+// `etaLanes`: each lane's index ratio (0: that lane is not bent), or null for
+// s.eta on every lane.
 template <bool kRefracts>
-LENSRT_AVX void step(const Sphere& s, Lanes& L) {
+LENSRT_AVX void step(const Sphere& s, const double* etaLanes, Lanes& L) {
   const V R = splat(s.radius), twoR = splat(2.0 * s.radius), zero = splat(0.0);
   for (std::size_t g = 0; g < kLanes; g += kWidth) {
     const V px = load(&L.ox[g]), py = load(&L.oy[g]), pz = load(&L.oz[g]) - splat(s.z);
@@ -61,18 +63,19 @@ LENSRT_AVX void step(const Sphere& s, Lanes& L) {
     store(&L.oz[g], hz + splat(s.z));
     V dzOut = dz;
     if constexpr (kRefracts) {
-      const V eta = splat(s.eta), one = splat(1.0);
+      const V eta = etaLanes ? load(&etaLanes[g]) : splat(s.eta), one = splat(1.0);
+      const M bends = eta != zero;  // a lane with eta 0 only crosses the surface
       const V normalScale = select(near, splat(s.absInvRadius), splat(-s.absInvRadius));
       const V scaledDisc = disc * splat(s.invRadius2);
       const V cos2I = select(scaledDisc < one, scaledDisc, one);  // std::min(1.0, scaledDisc)
-      const V sin2T = splat(s.eta * s.eta) * (one - cos2I);
-      ok &= ~(sin2T >= one);
+      const V sin2T = eta * eta * (one - cos2I);
+      ok &= ~(bends & (sin2T >= one));
       const V cosI = root * splat(s.absInvRadius);
-      const V cosT = sqrt(select(ok, one - sin2T, zero));
+      const V cosT = sqrt(select(ok & bends, one - sin2T, zero));
       const V k = normalScale * (eta * cosI - cosT);
-      store(&L.dx[g], dx * eta + hx * k);
-      store(&L.dy[g], dy * eta + hy * k);
-      dzOut = dz * eta + (hz - R) * k;
+      store(&L.dx[g], select(bends, dx * eta + hx * k, dx));
+      store(&L.dy[g], select(bends, dy * eta + hy * k, dy));
+      dzOut = select(bends, dz * eta + (hz - R) * k, dz);
       store(&L.dz[g], dzOut);
     }
     ok &= dzOut < zero;
@@ -89,9 +92,13 @@ bool available() {
 
 void sphereStep(const Sphere& s, Lanes& lanes) {
   if (s.eta != 0.0)
-    step<true>(s, lanes);
+    step<true>(s, nullptr, lanes);
   else
-    step<false>(s, lanes);
+    step<false>(s, nullptr, lanes);
+}
+
+void sphereStep(const Sphere& s, const std::array<double, kLanes>& eta, Lanes& lanes) {
+  step<true>(s, eta.data(), lanes);
 }
 
 #else
@@ -100,6 +107,7 @@ bool available() {
   return false;
 }
 void sphereStep(const Sphere&, Lanes&) {}
+void sphereStep(const Sphere&, const std::array<double, kLanes>&, Lanes&) {}
 
 #endif
 

@@ -33,5 +33,8 @@ struct Sphere {
 bool available();
 // LensSystem::step<true> on every lane that is alive; dead lanes stay dead.
 void sphereStep(const Sphere& s, Lanes& lanes);
+// The same with each lane's own index ratio (its wavelength), 0 where the
+// surface does not bend that lane's ray; s.eta is ignored.
+void sphereStep(const Sphere& s, const std::array<double, kLanes>& eta, Lanes& lanes);
 
 }  // namespace lensrt::trace_lanes

@@ -29,6 +29,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   const int tilesX = (region.width() + tile - 1) / tile, tilesY = (region.height() + tile - 1) / tile;
   const std::uint32_t spp = lastSample - firstSample;
   std::atomic<std::uint64_t> blocked{0};
+  const bool spectral = camera.tracesWavelengths();
 
   const auto renderTile = [&](int t) {
     const int x0 = region.x0 + (t % tilesX) * tile, y0 = region.y0 + (t / tilesX) * tile;
@@ -41,6 +42,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
     const std::size_t batch = std::size_t(std::min<std::uint64_t>(kCameraBatch, rowSamples));
     std::vector<CameraSample> samples(batch);
     std::vector<std::optional<CameraRay>> rays(batch);
+    std::vector<Rgb> spectralWeights(spectral ? batch : 0);
     for (int y = y0; y < y1; ++y) {
       for (std::uint64_t first = 0; first < rowSamples; first += batch) {
         const std::size_t n = std::size_t(std::min<std::uint64_t>(batch, rowSamples - first));
@@ -55,8 +57,12 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           CameraSample& cs = samples[k];
           cs.film = {float(x0 + int(j / spp)) + offset.x, float(y) + offset.y};
           cs.lens = sampler.get2D(kDimLens);
-          cs.wavelengthNm =
-              kWavelengthMinNm + (kWavelengthMaxNm - kWavelengthMinNm) * sampler.get1D(kDimWavelength);
+          // The sampler's 1D stream is a scrambled van der Corput sequence in
+          // the sample index: a pixel's wavelengths are stratified (any
+          // power-of-two prefix, so passes and resumes keep it).
+          const WavelengthSample ws = sampleWavelength(sampler.get1D(kDimWavelength));
+          cs.wavelengthNm = ws.wavelengthNm;
+          if (spectral) spectralWeights[k] = ws.weight;
         }
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
         for (std::size_t k = 0; k < n; ++k) {
@@ -67,7 +73,9 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             acc.addBlocked();
             ++tileBlocked;
           } else {
-            acc.add(integrator.trace(cr->ray, Sampler(settings.seed, pixelOf(j), sampleOf(j))), cr->weight);
+            PathSample path = integrator.trace(cr->ray, Sampler(settings.seed, pixelOf(j), sampleOf(j)));
+            if (spectral) path.radiance = path.radiance * spectralWeights[k];
+            acc.add(path, cr->weight);
           }
         }
       }

@@ -18,6 +18,7 @@
 #include "render/integrator.h"
 #include "render/pixel_region.h"
 #include "render/progress.h"
+#include "render/spectral_response.h"
 
 namespace lensrt {
 
@@ -41,10 +42,11 @@ struct RenderOutput {
   }
 };
 
-// Wavelengths handed to the camera are uniform in this range (nm).
-inline constexpr float kWavelengthMinNm = 380.0f;
-inline constexpr float kWavelengthMaxNm = 780.0f;
-
+// Wavelengths: each camera sample carries one, drawn from the film's mean
+// response (spectral_response.h) through the sampler's stratified 1D stream,
+// so a pixel's samples cover the spectrum evenly. With a camera that traces
+// them (Camera::tracesWavelengths) each sample's radiance is weighted by its
+// wavelength's RGB weight: a grey scene keeps its colour, with little extra noise.
 RenderOutput renderImage(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
                          Progress* progress = nullptr);
 

@@ -203,13 +203,24 @@ int expectBatchedEqualsOneAtATime(const LensSystem& lens, int count, unsigned lo
   }
   rays[5].direction = {0, 0, 0};  // invalid inputs fail alike
   rays[6].direction = {0, 0, 1};
-  std::vector<std::optional<LensRay>> batched(rays.size());
+  // Each ray at its own wavelength too (dispersion), some at the d line.
+  std::vector<double> wavelengths;
+  for (int i = 0; i < count; ++i)
+    wavelengths.push_back(i % 5 == 0 ? kWavelengthDNm : 380.0 + 400.0 * rng.uniform());
+  std::vector<std::optional<LensRay>> batched(rays.size()), spectral(rays.size());
   lens.traceFromFilm(rays, batched);
+  lens.traceFromFilm(rays, wavelengths, spectral);
   int passed = 0;
   const auto same = [](const Vec3d& a, const Vec3d& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const std::optional<LensRay> one = lens.traceFromFilm(rays[i]);
     EXPECT_EQ(one.has_value(), batched[i].has_value()) << i;
+    const std::optional<LensRay> oneSpectral = lens.traceFromFilm(rays[i], wavelengths[i]);
+    EXPECT_EQ(oneSpectral.has_value(), spectral[i].has_value()) << i;
+    if (oneSpectral && spectral[i]) {
+      EXPECT_TRUE(same(oneSpectral->origin, spectral[i]->origin)) << i;
+      EXPECT_TRUE(same(oneSpectral->direction, spectral[i]->direction)) << i;
+    }
     if (!one || !batched[i]) continue;
     ++passed;
     EXPECT_TRUE(same(one->origin, batched[i]->origin)) << i;

@@ -1,0 +1,56 @@
+#include "optics/chromatic.h"
+
+#include <cmath>
+
+#include "optics/distortion.h"
+#include "optics/paraxial.h"
+
+namespace lensrt {
+
+bool hasDispersion(const LensPrescription& lens) {
+  for (const Surface& s : lens.surfaces)
+    if (s.medium.vd > 0.0 && s.medium.nd > 1.0) return true;
+  return false;
+}
+
+LensPrescription atWavelength(const LensPrescription& lens, double wavelengthNm) {
+  LensPrescription out = lens;
+  for (Surface& s : out.surfaces) s.medium.nd = Dispersion::of(s.medium).index(wavelengthNm);
+  return out;
+}
+
+double axialColorMm(const LensPrescription& lens) {
+  return computeParaxial(atWavelength(lens, kWavelengthCNm)).bfl -
+         computeParaxial(atWavelength(lens, kWavelengthFNm)).bfl;
+}
+
+std::optional<LateralColor> lateralColor(const LensSystem& lens, double imageHeightMm) {
+  const double film = lens.paraxial().bfl;
+  const std::optional<double> angle = fieldAngleForImageHeight(lens, kInfinity, film, imageHeightMm);
+  if (!angle) return std::nullopt;
+  const FieldPoint field{*angle, kInfinity};
+  const std::optional<double> f = chiefRayImageHeight(lens, field, film, kWavelengthFNm);
+  const std::optional<double> c = chiefRayImageHeight(lens, field, film, kWavelengthCNm);
+  if (!f || !c) return std::nullopt;
+  return LateralColor{*angle, std::abs(*f), std::abs(*c)};
+}
+
+ChromaticCurves chromaticCurves(const LensSystem& lens, double maxImageHeightMm, int points) {
+  ChromaticCurves out;
+  const double bflD = lens.paraxial().bfl;
+  for (int i = 0; i < points; ++i) {
+    const double wl = 400.0 + 300.0 * i / (points - 1);
+    out.wavelengthNm.push_back(wl);
+    out.focalShiftMm.push_back(computeParaxial(atWavelength(lens.prescription(), wl)).bfl - bflD);
+  }
+  for (int i = 1; i < points; ++i) {
+    const double h = maxImageHeightMm * i / (points - 1);
+    if (const std::optional<LateralColor> lc = lateralColor(lens, h)) {
+      out.imageHeightMm.push_back(h);
+      out.lateralColorUm.push_back(lc->um());
+    }
+  }
+  return out;
+}
+
+}  // namespace lensrt
