@@ -7,6 +7,7 @@
 
 #include "app/svg_plot.h"
 #include "core/constants.h"
+#include "optics/chromatic.h"
 #include "optics/distortion.h"
 #include "optics/relative_illumination.h"
 #include "optics/spot_diagram.h"
@@ -31,6 +32,8 @@ Svg page(const LensView& view, const std::string& what, const std::string& defin
 .spot { fill: #1f5fa8; fill-opacity: 0.75; }
 .airy { fill: none; stroke: #2a9d4b; stroke-width: 1.2; stroke-dasharray: 5 3; }
 .cross { stroke: #999; stroke-width: 0.8; }
+.focal { stroke: #6a3d9a; stroke-width: 2.4; }
+.lateral { stroke: #b0302a; stroke-width: 2.4; }
 )");
   const std::string& name = view.lens.prescription().name;
   svg.text({40, 38}, fmt::format("{} \u2014 {}", name, what), "class=\"title\"");
@@ -243,6 +246,58 @@ LensPlot plotSpotDiagrams(const LensView& view) {
                  "is smaller than the sensor diagonal.",
                  limit.angleDeg, limit.imageHeightMm),
              "class=\"note\"");
+  return {std::move(svg), std::move(table)};
+}
+
+LensPlot plotChromatic(const LensView& view) {
+  Svg svg = page(view, "chromatic aberration",
+                 "Left: axial colour, the paraxial back focal length at each wavelength minus that at the d "
+                 "line (587.6 nm); glass index from n_d, V_d (or Sellmeier).",
+                 "Right: lateral colour, the chief ray's image height at F (486.1 nm) minus at C (656.3 nm), "
+                 "against the d-line image height; object at infinity.");
+  svg.comment(
+      "Chromatic aberration: focal shift = paraxial BFL(lambda) - BFL(d line), mm; lateral colour = exact "
+      "chief-ray image height at F minus at C on the d line's paraxial focal plane, um.");
+  const int points = 41;
+  const ChromaticCurves c = chromaticCurves(view.lens, view.halfDiagonalMm(), points);
+  PlotTable table{{"wavelength_nm", "focal_shift_mm", "image_height_mm", "lateral_color_um"}, {}};
+  std::vector<Vec2d> focal, lateral;
+  double fLo = 0.0, fHi = 0.0, lLo = 0.0, lHi = 0.0;
+  for (int i = 0; i < points; ++i) {
+    table.rows.push_back({c.wavelengthNm[i], c.focalShiftMm[i], c.imageHeightMm[i], c.lateralColorUm[i]});
+    focal.push_back({c.wavelengthNm[i], c.focalShiftMm[i]});
+    fLo = std::min(fLo, c.focalShiftMm[i]), fHi = std::max(fHi, c.focalShiftMm[i]);
+    if (std::isnan(c.lateralColorUm[i])) continue;
+    lateral.push_back({c.imageHeightMm[i], c.lateralColorUm[i]});
+    lLo = std::min(lLo, c.lateralColorUm[i]), lHi = std::max(lHi, c.lateralColorUm[i]);
+  }
+  // A lens without dispersion data: flat zero lines on a small scale.
+  if (fHi - fLo < 1e-3) fLo = std::min(fLo, -0.01), fHi = std::max(fHi, 0.01);
+  if (lHi - lLo < 1e-2) lLo = std::min(lLo, -1.0), lHi = std::max(lHi, 1.0);
+  PlotAxis fx{c.wavelengthNm.front(), c.wavelengthNm.back(), "wavelength (nm)", 6};
+  PlotAxis fy{fLo, fHi, "focal shift from the d line (mm)", 8};
+  widenToTicks(fy.lo, fy.hi, 8);
+  const PlotFrame left({90, 130}, 340, 400, fx, fy);
+  left.drawAxes(svg);
+  left.series(svg, {{fx.lo, 0.0}, {fx.hi, 0.0}}, "class=\"zero\"");
+  left.series(svg, focal, "class=\"focal\" id=\"focal-shift\"");
+  PlotAxis lx{0.0, view.halfDiagonalMm(), "image height on the film (mm)", 6};
+  widenToTicks(lx.lo, lx.hi, 6);
+  PlotAxis ly{lLo, lHi, "lateral colour F \u2212 C (\u00b5m)", 8};
+  widenToTicks(ly.lo, ly.hi, 8);
+  const PlotFrame right({540, 130}, 340, 400, lx, ly);
+  right.drawAxes(svg);
+  sensorMarkers(svg, right, view, ly.hi, lx.hi);
+  right.series(svg, {{lx.lo, 0.0}, {lx.hi, 0.0}}, "class=\"zero\"");
+  right.series(svg, lateral, "class=\"lateral\" id=\"lateral-color\"");
+  const std::optional<LateralColor> corner = lateralColor(view.lens, view.halfDiagonalMm());
+  svg.text({90, 600},
+           hasDispersion(view.lens.prescription())
+               ? fmt::format("axial colour (BFL at C minus F) {:.4f} mm; lateral colour at the corner {}",
+                             axialColorMm(view.lens.prescription()),
+                             corner ? fmt::format("{:.2f} \u00b5m", corner->um()) : std::string("n/a"))
+               : std::string("No dispersion data (no Abbe numbers): every wavelength focuses alike."),
+           "class=\"legend\"");
   return {std::move(svg), std::move(table)};
 }
 

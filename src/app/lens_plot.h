@@ -1,5 +1,5 @@
 // SVG plots of a lens's field performance from exact ray tracing:
-// relative illumination, distortion and spot diagrams.
+// relative illumination, distortion, spot diagrams and chromatic aberration.
 #pragma once
 
 #include <string>
@@ -32,5 +32,10 @@ LensPlot plotDistortion(const LensView& view);
 // Columns: field_angle_deg, image_height_mm, dx_um, dy_um (each ray's film
 // point from its spot's centroid; every ray, also those outside the drawing).
 LensPlot plotSpotDiagrams(const LensView& view);
+
+// Columns: wavelength_nm, focal_shift_mm (paraxial BFL minus the d line's),
+// image_height_mm, lateral_color_um (F minus C chief rays; nan where none
+// reaches): two curves of 41 points side by side.
+LensPlot plotChromatic(const LensView& view);
 
 }  // namespace lensrt

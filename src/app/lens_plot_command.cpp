@@ -1,4 +1,4 @@
-// `lensrt lens plot FILE --what relative-illumination|distortion|spot
+// `lensrt lens plot FILE --what relative-illumination|distortion|spot|chromatic
 //  [-o out.svg] [--csv out.csv]`.
 #include <fmt/core.h>
 
@@ -19,11 +19,12 @@ CommandAction addLensPlotCommand(CLI::App& lensApp, const CommandContext&) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* plot = lensApp.add_subcommand(
-      "plot", "Plot relative illumination, distortion or spot diagrams across the field (SVG and/or CSV)");
+      "plot",
+      "Plot relative illumination, distortion, spot diagrams or chromatic aberration (SVG and/or CSV)");
   addLensViewOptions(*plot, options->view, false);
-  plot->add_option("--what", options->what, "relative-illumination, distortion or spot")
+  plot->add_option("--what", options->what, "relative-illumination, distortion, spot or chromatic")
       ->required()
-      ->check(CLI::IsMember({"relative-illumination", "distortion", "spot"}));
+      ->check(CLI::IsMember({"relative-illumination", "distortion", "spot", "chromatic"}));
   plot->add_option("--csv", options->csv,
                    "Also (or instead of -o) write the plotted data as CSV, '-' for standard output: a header "
                    "naming the columns, then one row per plotted point (per ray for spot)");
@@ -33,9 +34,10 @@ CommandAction addLensPlotCommand(CLI::App& lensApp, const CommandContext&) {
     if (!options->csv.empty() && options->csv != "-") checkOutputDirectory(options->csv);
     Warnings warnings([](const std::string& w) { fmt::print(stderr, "lensrt: warning: {}\n", w); });
     const LensView view = prepareLensView(options->view, warnings);
-    const LensPlot plot = options->what == "distortion" ? plotDistortion(view)
-                          : options->what == "spot"     ? plotSpotDiagrams(view)
-                                                        : plotRelativeIllumination(view);
+    const LensPlot plot = options->what == "distortion"  ? plotDistortion(view)
+                          : options->what == "spot"      ? plotSpotDiagrams(view)
+                          : options->what == "chromatic" ? plotChromatic(view)
+                                                         : plotRelativeIllumination(view);
     if (!options->view.output.empty()) plot.svg.write(options->view.output);
     if (!options->csv.empty()) writeTextOutput(options->csv, plot.table.csv());
     return 0;

@@ -1,6 +1,7 @@
 #include "optics/chromatic.h"
 
 #include <cmath>
+#include <limits>
 
 #include "optics/distortion.h"
 #include "optics/paraxial.h"
@@ -43,12 +44,12 @@ ChromaticCurves chromaticCurves(const LensSystem& lens, double maxImageHeightMm,
     out.wavelengthNm.push_back(wl);
     out.focalShiftMm.push_back(computeParaxial(atWavelength(lens.prescription(), wl)).bfl - bflD);
   }
-  for (int i = 1; i < points; ++i) {
+  for (int i = 0; i < points; ++i) {
     const double h = maxImageHeightMm * i / (points - 1);
-    if (const std::optional<LateralColor> lc = lateralColor(lens, h)) {
-      out.imageHeightMm.push_back(h);
-      out.lateralColorUm.push_back(lc->um());
-    }
+    // On the axis both chief rays run along it: no lateral colour.
+    const std::optional<LateralColor> lc = i == 0 ? LateralColor{} : lateralColor(lens, h);
+    out.imageHeightMm.push_back(h);
+    out.lateralColorUm.push_back(lc ? lc->um() : std::numeric_limits<double>::quiet_NaN());
   }
   return out;
 }

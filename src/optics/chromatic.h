@@ -36,9 +36,10 @@ struct LateralColor {
 };
 std::optional<LateralColor> lateralColor(const LensSystem& lens, double imageHeightMm);
 
-// Curves for `lens plot --what chromatic`: the paraxial focal shift (BFL at a
-// wavelength minus at the d line) over the visible range, and lateral colour
-// (F minus C, um) against the d-line image height up to `maxImageHeightMm`.
+// Curves for `lens plot --what chromatic`, `points` each: the paraxial focal
+// shift (BFL at a wavelength minus at the d line) from 400 to 700 nm, and
+// lateral colour (F minus C, um; NaN where no chief ray reaches) against the
+// d-line image height from 0 to `maxImageHeightMm`, object at infinity.
 struct ChromaticCurves {
   std::vector<double> wavelengthNm, focalShiftMm;
   std::vector<double> imageHeightMm, lateralColorUm;

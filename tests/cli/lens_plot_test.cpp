@@ -170,7 +170,8 @@ TEST(LensPlotCli, EachPlotIsWellFormedWithItsCurveAxesAndLabels) {
       {"relative-illumination",
        {"id=\"relative-illumination\"", "image height on the film (mm)", "cos\u2074"}},
       {"distortion", {"id=\"distortion\"", "distortion (%)", "real image height on the film (mm)"}},
-      {"spot", {"id=\"spot-0\"", "id=\"spot-1\"", "id=\"spot-2\"", "RMS radius", "(\u00b5m)"}}};
+      {"spot", {"id=\"spot-0\"", "id=\"spot-1\"", "id=\"spot-2\"", "RMS radius", "(\u00b5m)"}},
+      {"chromatic", {"id=\"focal-shift\"", "id=\"lateral-color\"", "wavelength (nm)", "No dispersion data"}}};
   for (const auto& [what, texts] : expected) {
     const std::string out = (dir / (what + ".svg")).string();
     const RunResult r = runLensrt(
@@ -294,6 +295,37 @@ TEST(LensPlotCli, CsvHoldsThePlottedSeriesWithNamedColumns) {
   for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
     EXPECT_TRUE(entry.path().filename() == "ri.csv" || entry.path().filename() == "ri.svg")
         << "no temporary left behind: " << entry.path();
+}
+
+// --what chromatic: the focal shift is zero at the d line and rises to the
+// red (the double Gauss is undercorrected); lateral colour is zero on the
+// axis and reaches `lens info`'s lateral_color_um at the half diagonal.
+TEST(LensPlotCli, ChromaticCsvAgreesWithLensInfo) {
+  const std::string lens = kLensDir + "dgauss-100mm.lens";
+  const RunResult r = runLensrt({"lens", "plot", lens, "--what", "chromatic", "--csv", "-"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Csv csv = parseCsv(r.out);
+  EXPECT_EQ(csv.columns, (std::vector<std::string>{"wavelength_nm", "focal_shift_mm", "image_height_mm",
+                                                   "lateral_color_um"}));
+  ASSERT_EQ(csv.rows.size(), 41u);
+  EXPECT_EQ(csv.rows.front()[0], 400.0);
+  EXPECT_EQ(csv.rows.back()[0], 700.0);
+  for (std::size_t i = 1; i < csv.rows.size(); ++i) {
+    EXPECT_GT(csv.rows[i][1], csv.rows[i - 1][1]) << "the focus recedes toward the red";
+    if (csv.rows[i - 1][0] < 587.5618 && csv.rows[i][0] >= 587.5618) {
+      EXPECT_LT(csv.rows[i - 1][1], 0.0);
+      EXPECT_GE(csv.rows[i][1], 0.0);
+    }
+  }
+  EXPECT_EQ(csv.rows.front()[3], 0.0);
+  const RunResult info = runLensrt({"lens", "info", lens, "--json"});
+  ASSERT_EQ(info.status, 0) << info.err;
+  const std::size_t at = info.out.find("\"lateral_color_um\": ");
+  ASSERT_NE(at, std::string::npos);
+  const double lateral = std::stod(info.out.substr(at + 20));
+  EXPECT_NEAR(csv.rows.back()[2], std::hypot(36.0, 24.0) / 2, 1e-6);
+  EXPECT_NEAR(csv.rows.back()[3], lateral, 1e-6);
+  EXPECT_GT(lateral, 1.0);
 }
 
 TEST(LensPlotCli, BadArgumentsFailWithOneLineAndLeaveTheOutputAlone) {

@@ -92,7 +92,9 @@ TEST(Chromatic, CurvesCrossZeroFocalShiftAtTheDLine) {
   const LensSystem lens(test::libraryLens("dgauss-100mm"));
   const ChromaticCurves c = chromaticCurves(lens, 21.63, 11);
   ASSERT_EQ(c.wavelengthNm.size(), 11u);
-  ASSERT_EQ(c.imageHeightMm.size(), 10u);
+  ASSERT_EQ(c.imageHeightMm.size(), 11u);
+  EXPECT_EQ(c.lateralColorUm.front(), 0.0);
+  EXPECT_NEAR(c.lateralColorUm.back(), lateralColor(lens, 21.63)->um(), 1e-9);
   // The focal shift rises toward the red for an undercorrected lens and is
   // zero at the d line (between samples: interpolate).
   EXPECT_LT(c.focalShiftMm.front(), 0.0);
