@@ -15,6 +15,7 @@
 #include "camera/thin_lens_camera.h"
 #include "core/constants.h"
 #include "core/error.h"
+#include "optics/chromatic.h"
 #include "optics/focus.h"
 #include "optics/lens_readers.h"
 #include "optics/paraxial.h"
@@ -153,8 +154,9 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
       ->check(numberIn(1.0, 1e7, "ISO speed"));
   cmd.add_option(
          "--dispersion", o.dispersion,
-         "on (default): --camera lens traces each sample at its own wavelength when the lens has Abbe "
-         "numbers (colour fringes); off: every ray at the d line (587.6 nm)")
+         "on (default): when --lens has dispersion data (Abbe numbers), each sample is traced at its own "
+         "wavelength: colour fringes with --camera lens, a focal length per wavelength with thin and "
+         "thick; off: every ray at the d line (587.6 nm)")
       ->check(CLI::IsMember({"on", "off"}));
 }
 
@@ -298,6 +300,7 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
     p.focusMetres = focusM;
     p.aperture = aperture;
     p.lensName = lensName;
+    if (lens && o.dispersion == "on" && hasDispersion(*lens)) p.dispersion.emplace(*lens);
     return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
   }
   if (o.model == "thick") {
@@ -307,6 +310,7 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
     ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
     p.aperture = aperture;
     p.lensName = lensName;
+    if (o.dispersion == "on" && hasDispersion(*lens)) p.dispersion.emplace(*lens);
     return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
   }
   LensCameraParams p;

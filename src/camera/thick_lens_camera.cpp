@@ -61,7 +61,7 @@ std::string ThickLensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "thick lens f=%gmm t=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
                 params_.rearPrincipalZ - params_.frontPrincipalZ, params_.fNumber,
                 focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
-  return buf;
+  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "");
 }
 
 CameraInfo ThickLensCamera::info() const {
@@ -70,7 +70,8 @@ CameraInfo ThickLensCamera::info() const {
           params_.fNumber,
           params_.focusMetres,
           params_.focalLengthMm,
-          lensrt::describe(exposure_)};
+          lensrt::describe(exposure_),
+          params_.dispersion.has_value()};
 }
 
 std::optional<CameraRay> ThickLensCamera::generateCameraSpaceRay(const CameraSample& s) const {
@@ -83,7 +84,12 @@ std::optional<CameraRay> ThickLensCamera::generateCameraSpaceRay(const CameraSam
   const Vec3d a = p + (q - p) * ((P.rearPrincipalZ - filmZ_) / (q.z - filmZ_));
   const Vec3d origin{a.x, a.y, P.frontPrincipalZ};
   Vec3d dir;
-  if (std::isinf(u_)) {
+  if (P.dispersion) {
+    // The film (at v for the d line) is conjugate at this wavelength to the
+    // plane 1/u = 1/f(l) - 1/v in front of H (beyond infinity when negative).
+    const double invU = 1.0 / (P.focalLengthMm * P.dispersion->at(s.wavelengthNm)) - 1.0 / v_;
+    dir = {up.x / v_ - a.x * invU, up.y / v_ - a.y * invU, -1.0};
+  } else if (std::isinf(u_)) {
     dir = {up.x, up.y, -v_};  // parallel to the chief ray through the nodal points
   } else {
     const double k = u_ / v_;

@@ -3,6 +3,7 @@
 #include "camera/aperture.h"
 #include "camera/camera.h"
 #include "camera/exposure.h"
+#include "optics/chromatic.h"
 #include "optics/paraxial.h"
 
 namespace lensrt {
@@ -21,6 +22,10 @@ struct ThickLensParams {
   double focusMetres = 10.0;  // from the entrance pupil; +infinity allowed
   ApertureShape aperture;
   std::string lensName;
+  // Dispersion of the lens: each sample's focal length is focalLengthMm
+  // times this ratio at its wavelength, principal planes and pupils kept
+  // (axial colour). None: every wavelength alike.
+  std::optional<FocalLengthRatio> dispersion;
 };
 
 // Cardinal points and pupils of a lens's paraxial data, at f-number `fNumber`
@@ -51,6 +56,7 @@ class ThickLensCamera final : public Camera {
 
   std::string describe() const override;
   CameraInfo info() const override;
+  bool tracesWavelengths() const override { return params_.dispersion.has_value(); }
   const ThickLensParams& params() const { return params_; }
   double filmZ() const { return filmZ_; }
   // Object distance from H and image distance from H' (mm) of the focus plane.

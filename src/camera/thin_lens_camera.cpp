@@ -32,7 +32,7 @@ std::string ThinLensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "thin lens f=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
                 params_.fNumber, focusText(params_.focusMetres).c_str(),
                 lensrt::describe(params_.aperture).c_str());
-  return buf;
+  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "");
 }
 
 CameraInfo ThinLensCamera::info() const {
@@ -41,7 +41,8 @@ CameraInfo ThinLensCamera::info() const {
           params_.fNumber,
           params_.focusMetres,
           params_.focalLengthMm,
-          lensrt::describe(exposure_)};
+          lensrt::describe(exposure_),
+          params_.dispersion.has_value()};
 }
 
 std::optional<CameraRay> ThinLensCamera::generateCameraSpaceRay(const CameraSample& s) const {
@@ -50,7 +51,13 @@ std::optional<CameraRay> ThinLensCamera::generateCameraSpaceRay(const CameraSamp
   // sensor coordinates: the physical film point is (-x, -y, +v)).
   const Vec2d q = aperture_.sample({s.lens.x, s.lens.y});
   Vec3d dir;
-  if (std::isinf(focusMm_)) {
+  if (params_.dispersion) {
+    // The film (at v for the d line) is conjugate at this wavelength to the
+    // plane 1/s = 1/f(l) - 1/v, which may lie beyond infinity (1/s < 0); the
+    // undeviated ray through the centre fixes the direction toward it.
+    const double invS = 1.0 / (params_.focalLengthMm * params_.dispersion->at(s.wavelengthNm)) - 1.0 / v_;
+    dir = {up.x / v_ - q.x * invS, up.y / v_ - q.y * invS, -1.0};
+  } else if (std::isinf(focusMm_)) {
     dir = {up.x, up.y, -v_};
   } else {
     const double k = focusMm_ / v_;  // to the focus plane Z = -s

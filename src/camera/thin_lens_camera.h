@@ -1,8 +1,11 @@
 #pragma once
 
+#include <optional>
+
 #include "camera/aperture.h"
 #include "camera/camera.h"
 #include "camera/exposure.h"
+#include "optics/chromatic.h"
 
 namespace lensrt {
 
@@ -12,6 +15,10 @@ struct ThinLensParams {
   double focusMetres = 10.0;  // from the lens (= entrance pupil); +infinity allowed
   ApertureShape aperture;
   std::string lensName;  // the lens it stands for, if any (metadata only)
+  // Dispersion of the lens it stands for: each sample's focal length is
+  // focalLengthMm times this ratio at its wavelength (axial colour only: a
+  // thin lens has no lateral colour). None: every wavelength alike.
+  std::optional<FocalLengthRatio> dispersion;
 };
 
 // An ideal thin lens at the camera origin: every point of the focus plane
@@ -30,6 +37,7 @@ class ThinLensCamera final : public Camera {
 
   std::string describe() const override;
   CameraInfo info() const override;
+  bool tracesWavelengths() const override { return params_.dispersion.has_value(); }
   const ThinLensParams& params() const { return params_; }
   double imageDistanceMm() const { return v_; }
   const Aperture& aperture() const { return aperture_; }

@@ -1,5 +1,6 @@
 #include "optics/chromatic.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -52,6 +53,19 @@ ChromaticCurves chromaticCurves(const LensSystem& lens, double maxImageHeightMm,
     out.lateralColorUm.push_back(lc ? lc->um() : std::numeric_limits<double>::quiet_NaN());
   }
   return out;
+}
+
+FocalLengthRatio::FocalLengthRatio(const LensPrescription& lens) {
+  const double efl = computeParaxial(lens).efl;
+  for (double wl = kMinNm; wl <= 780.0 + 1e-9; wl += kStepNm)
+    ratio_.push_back(computeParaxial(atWavelength(lens, wl)).efl / efl);
+}
+
+double FocalLengthRatio::at(double wavelengthNm) const {
+  const double x = std::clamp((wavelengthNm - kMinNm) / kStepNm, 0.0, double(ratio_.size() - 1));
+  const std::size_t i = std::min(std::size_t(x), ratio_.size() - 2);
+  const double t = x - double(i);
+  return ratio_[i] + t * (ratio_[i + 1] - ratio_[i]);
 }
 
 }  // namespace lensrt

@@ -46,4 +46,17 @@ struct ChromaticCurves {
 };
 ChromaticCurves chromaticCurves(const LensSystem& lens, double maxImageHeightMm, int points = 41);
 
+// The paraxial focal length against wavelength, as a ratio to the d line's,
+// for the thin and thick lens models derived from a lens: tabulated every
+// 5 nm from 380 to 780 nm and interpolated linearly (the curve is smooth).
+class FocalLengthRatio {
+ public:
+  explicit FocalLengthRatio(const LensPrescription& lens);
+  double at(double wavelengthNm) const;
+
+ private:
+  static constexpr double kMinNm = 380.0, kStepNm = 5.0;
+  std::vector<double> ratio_;
+};
+
 }  // namespace lensrt
