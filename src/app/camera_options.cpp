@@ -158,6 +158,11 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
          "wavelength: colour fringes with --camera lens, a focal length per wavelength with thin and "
          "thick; off: every ray at the d line (587.6 nm)")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--coatings", o.coatings,
+                 "Fresnel losses in the full lens (--camera lens): none (uncoated glass), single (a "
+                 "quarter-wave MgF2 layer at 550 nm) or multi (0.5% reflectance per surface); default: "
+                 "lossless glass, as pbrt")
+      ->check(CLI::IsMember({"none", "single", "multi"}));
 }
 
 FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {
@@ -318,6 +323,7 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   p.focusMetres = focusM;
   p.aperture = aperture;
   p.dispersion = o.dispersion == "on";
+  p.coatings = parseCoating(o.coatings);
   return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
 }
 
@@ -342,6 +348,7 @@ ImageMetadata cameraMetadata(const Camera& camera) {
       {"lensrt:focal_length_mm", fmt::format("{:.4g}", i.focalLengthMm)},
       {"lensrt:sensor_mm", fmt::format("{:.4g}x{:.4g}", f.sensorWidthMm, f.sensorHeightMm)},
       {"lensrt:exposure", i.exposure},
+      {"lensrt:coatings", i.coatings.empty() ? "off (lossless)" : i.coatings},
       // Where the camera stood, so another renderer can take the same view
       // (tools/validate-cycles does): glTF world space, metres, row by row.
       {"lensrt:world_from_camera", matrixText(camera.worldFromCamera().matrix())},

@@ -6,6 +6,7 @@
 //   --blades N   --blade-rotation DEG   --focal-length MM
 //   --exposure normalized|physical   --shutter SECONDS   --iso N
 //   --dispersion on|off
+//   --coatings none|single|multi
 //
 // Bad values are usage errors (CLI::ValidationError naming the flag, exit 2).
 #pragma once
@@ -39,6 +40,7 @@ struct CameraOptions {
   std::string shutter;  // seconds, "0.01" or "1/100"; empty: 1/100
   std::optional<double> iso;
   std::string dispersion = "on";  // the full lens traces each sample at its wavelength
+  std::string coatings;           // --coatings none|single|multi for the full lens; empty: lossless glass
   std::filesystem::path lensDir;  // the library; addCameraOptions sets the installed one
 };
 
@@ -67,7 +69,8 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& options, const CameraDes
                                    FilmGeometry film, const HitDistance& hitDistance, Warnings& warnings);
 
 // lensrt:camera_model, lensrt:lens, lensrt:f_number, lensrt:focus_m,
-// lensrt:focal_length_mm, lensrt:sensor_mm, lensrt:exposure, lensrt:dispersion.
+// lensrt:focal_length_mm, lensrt:sensor_mm, lensrt:exposure, lensrt:dispersion,
+// lensrt:coatings.
 ImageMetadata cameraMetadata(const Camera& camera);
 
 }  // namespace lensrt

@@ -16,6 +16,7 @@
 #include "app/option_checks.h"
 #include "core/constants.h"
 #include "core/warnings.h"
+#include "optics/axial_transmittance.h"
 #include "optics/chromatic.h"
 #include "optics/exit_pupil.h"
 #include "optics/focus.h"
@@ -32,6 +33,7 @@ struct InfoOptions {
   std::optional<double> fNumber;
   std::string focus = "inf";
   std::optional<double> circleOfConfusionMm;
+  std::string coatings = "none";
   bool json = false;
 };
 
@@ -126,6 +128,8 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
   // Chromatic aberration (0 without Abbe numbers): lateral at the half diagonal.
   const double axialColor = axialColorMm(rx);
   const std::optional<LateralColor> lateral = lateralColor(lens, halfDiagonal);
+  const Coating coating = parseCoating(o.coatings).value_or(Coating::None);
+  const double transmittance = axialTransmittance(LensSystem(rx, coating));
 
   if (o.json) {
     nlohmann::json j;
@@ -172,6 +176,8 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
     j["dispersion_data"] = hasDispersion(rx);
     j["axial_color_mm"] = axialColor;
     j["lateral_color_um"] = lateral ? nlohmann::json(lateral->um()) : nlohmann::json(nullptr);
+    j["coatings"] = coatingName(coating);
+    j["axial_transmittance"] = transmittance;
     j["warnings"] = warningList;
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -214,6 +220,8 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
         axialColor, lateral ? fmt::format("{:.2f} um", lateral->um()) : "n/a", halfDiagonal);
   else
     fmt::print("  chromatic aberration  none modelled (no Abbe numbers)\n");
+  fmt::print("  axial transmittance   {:.1f}% of an axial bundle at the d line (--coatings {})\n",
+             100.0 * transmittance, coatingName(coating));
   return 0;
 }
 
@@ -233,6 +241,12 @@ CommandAction addLensInfoCommand(CLI::App& lensApp, const CommandContext&) {
   info->add_option("--coc", options->circleOfConfusionMm,
                    "Circle of confusion in mm (default: diagonal / 1500)")
       ->check(aNumber("mm"));
+  info->add_option(
+          "--coatings", options->coatings,
+          "Surface coatings for the axial transmittance: none (uncoated), single (quarter-wave MgF2 at "
+          "550 nm) or multi (0.5% per surface)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "single", "multi"}));
   info->add_flag("--json", options->json, "Print JSON (distances in mm unless named _m)");
   return [options] { return runInfo(*options); };
 }

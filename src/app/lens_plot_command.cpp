@@ -25,6 +25,11 @@ CommandAction addLensPlotCommand(CLI::App& lensApp, const CommandContext&) {
   plot->add_option("--what", options->what, "relative-illumination, distortion, spot or chromatic")
       ->required()
       ->check(CLI::IsMember({"relative-illumination", "distortion", "spot", "chromatic"}));
+  plot->add_option(
+          "--coatings", options->view.coatings,
+          "relative-illumination with the Fresnel losses of uncoated (none), single-layer (single) or "
+          "multi-layer (multi) coated surfaces; default: lossless glass")
+      ->check(CLI::IsMember({"none", "single", "multi"}));
   plot->add_option("--csv", options->csv,
                    "Also (or instead of -o) write the plotted data as CSV, '-' for standard output: a header "
                    "naming the columns, then one row per plotted point (per ray for spot)");

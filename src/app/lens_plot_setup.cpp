@@ -99,7 +99,8 @@ LensView prepareLensView(const LensViewOptions& o, Warnings& warnings) {
   requireRealImage(user);
   return withLensErrors(user, [&] {
     const double widest = computeParaxial(user.prescription).fNumber;
-    LensSystem lens(o.fNumber ? stopDown(user.prescription, *o.fNumber, warnings) : user.prescription);
+    LensSystem lens(o.fNumber ? stopDown(user.prescription, *o.fNumber, warnings) : user.prescription,
+                    parseCoating(o.coatings));
     const double film = focusFilmDistance(lens, focusMm);
     return LensView{std::move(lens), widest, focusMm, film, w, h};
   });

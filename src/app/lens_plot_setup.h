@@ -17,6 +17,7 @@ struct LensViewOptions {
   std::optional<double> fNumber;
   std::string focus = "inf";
   std::string sensor = "36x24";
+  std::string coatings;  // none|single|multi: the traces carry Fresnel losses; empty: lossless
 };
 
 // Registers FILE, -o/--output, --fstop, --focus and --sensor; -o is

@@ -53,8 +53,9 @@ struct CameraInfo {
   double fNumber = 0.0;      // 0: no aperture (pinhole)
   double focusMetres = 0.0;  // from the entrance pupil; +infinity at infinity; 0: none (pinhole)
   double focalLengthMm = 0.0;
-  std::string exposure;     // e.g. "normalized" or "physical 0.01s ISO100"
-  bool dispersion = false;  // each sample traced at its own wavelength (tracesWavelengths)
+  std::string exposure;       // e.g. "normalized" or "physical 0.01s ISO100"
+  bool dispersion = false;    // each sample traced at its own wavelength (tracesWavelengths)
+  std::string coatings = {};  // the full lens's Fresnel model: "none", "single", "multi"; empty: lossless
 };
 
 // A focus distance for describe(): "2m", "infinity".

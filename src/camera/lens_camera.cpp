@@ -24,7 +24,7 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
   // A polygon of the f-number's area needs a round stop as wide as its corners.
   const double widen = polygonCircumradiusFactor(params.aperture.blades);
   LensPrescription stopped = stopDown(prescription, n / widen, warnings);
-  lens_ = std::make_unique<LensSystem>(std::move(stopped));
+  lens_ = std::make_unique<LensSystem>(std::move(stopped), params.coatings);
   const ParaxialData& p = lens_->paraxial();
   fNumber_ = p.fNumber * widen;
   entrancePupilZ_ = p.entrancePupilZ;
@@ -43,8 +43,9 @@ std::string LensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "lens %s f=%.4gmm f/%.3g focus=%s aperture=%s",
                 lens_->prescription().name.c_str(), lens_->paraxial().efl, fNumber_,
                 focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
-  // Part of the render's identity (merge, resume): on and off differ.
-  return std::string(buf) + (dispersion_ ? " dispersion=on" : "");
+  // Part of the render's identity (merge, resume): on and off differ, and so do coatings.
+  return std::string(buf) + (dispersion_ ? " dispersion=on" : "") +
+         (params_.coatings ? " coatings=" + coatingName(*params_.coatings) : std::string());
 }
 
 CameraInfo LensCamera::info() const {
@@ -54,7 +55,8 @@ CameraInfo LensCamera::info() const {
           params_.focusMetres,
           lens_->paraxial().efl,
           lensrt::describe(exposure_),
-          dispersion_};
+          dispersion_,
+          params_.coatings ? coatingName(*params_.coatings) : std::string()};
 }
 
 namespace {
@@ -104,7 +106,7 @@ LensCamera::PupilRay LensCamera::pupilRay(const CameraSample& s) const {
 std::optional<CameraRay> LensCamera::cameraRay(const std::optional<LensRay>& out, double weight) const {
   if (!out) return std::nullopt;
   const Vec3d o = Vec3d{out->origin.x, out->origin.y, out->origin.z - entrancePupilZ_} * 1e-3;
-  return CameraRay{Ray{Vec3f(o), Vec3f(out->direction)}, float(weight)};
+  return CameraRay{Ray{Vec3f(o), Vec3f(out->direction)}, float(weight * out->transmittance)};
 }
 
 std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& s) const {

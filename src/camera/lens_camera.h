@@ -20,6 +20,9 @@ struct LensCameraParams {
   // line, where the focus is computed. The CLI turns it on by default.
   bool dispersion = false;
   int pupilIntervals = 64;  // exit pupil bounds resolution over the film radius
+  // Fresnel losses at every refracting surface (optics/coating.h): each
+  // ray's weight times its transmittance. nullopt: lossless glass.
+  std::optional<Coating> coatings;
 };
 
 // The full element stack (Kolb et al. 1995): film point -> a point inside the

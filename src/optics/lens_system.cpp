@@ -28,7 +28,8 @@ bool refract(const Vec3d& d, const Vec3d& n, double n1, double n2, Vec3d& out) {
   return refractEta(d, n, n1 / n2, out);
 }
 
-LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(prescription)) {
+LensSystem::LensSystem(LensPrescription prescription, std::optional<Coating> coating)
+    : prescription_(std::move(prescription)), coating_(coating) {
   validatePrescription(prescription_);
   paraxial_ = computeParaxial(prescription_);
   hasAspheres_ = prescription_.hasAspheres();
@@ -43,8 +44,7 @@ LensSystem::LensSystem(LensPrescription prescription) : prescription_(std::move(
     t.apertureRadius = s.apertureDiameter / 2.0;
     t.apertureRadius2 = t.apertureRadius * t.apertureRadius;
     t.isStop = s.isStop;
-    t.aspheric = s.isAspheric();
-    t.profile = s.profile();
+    if (s.isAspheric()) t.asphere = std::make_shared<const AsphereProfile>(s.profile());
     t.ndAfter = s.medium.nd;
     t.after = Dispersion::of(s.medium);
     t.etaFromFilm = t.ndAfter / ndBefore;
@@ -63,13 +63,13 @@ template <bool kFromFilm>
 bool LensSystem::asphereStep(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d,
                              std::vector<Vec3d>* path) {
   const Vec3d p{o.x, o.y, o.z - s.z};
-  const auto t = intersectAsphere(s.profile, s.apertureRadius, p, d);
+  const auto t = intersectAsphere(*s.asphere, s.apertureRadius, p, d);
   if (!t) return false;
   const Vec3d hit = p + d * *t;
   o = {hit.x, hit.y, hit.z + s.z};
   if (path) path->push_back(o);
   if (eta != 0.0) {
-    const Vec3d n = asphereNormal(s.profile, hit);
+    const Vec3d n = asphereNormal(*s.asphere, hit);
     if (!refractEta(d, dot(n, d) > 0.0 ? -n : n, eta, d)) return false;
   }
   return kFromFilm ? d.z < 0.0 : d.z > 0.0;  // false: turned back
@@ -86,7 +86,7 @@ bool LensSystem::asphereStep(const TraceSurface& s, double eta, Vec3d& o, Vec3d&
 template <bool kFromFilm>
 inline bool LensSystem::step(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d,
                              std::vector<Vec3d>* path) {
-  if (s.aspheric) [[unlikely]]
+  if (s.asphere) [[unlikely]]
     return asphereStep<kFromFilm>(s, eta, o, d, path);
   // Work relative to the vertex: a sphere through the vertex is
   // x^2 + y^2 + z^2 - 2 R z = 0, which avoids cancellation for large R.
@@ -143,14 +143,27 @@ bool validInput(const LensRay& ray) {
          (kFromFilm ? ray.direction.z < 0.0 : ray.direction.z > 0.0);
 }
 
-std::optional<LensRay> finished(const Vec3d& o, const Vec3d& d) {
+std::optional<LensRay> finished(const Vec3d& o, const Vec3d& d, double transmittance = 1.0) {
   if (!isFinite(o) || !isFinite(d)) return std::nullopt;
-  return LensRay{o, normalize(d)};
+  return LensRay{o, normalize(d), transmittance};
+}
+
+// The Fresnel transmittance of a refraction from unit direction `in` to unit
+// `out` with index ratio eta = n1 / n2: out - eta in is along the normal
+// (Snell's law in vector form), which gives both angles' cosines.
+double refractionTransmittance(Coating coating, const Vec3d& in, const Vec3d& out, double n1, double n2,
+                               double wavelengthNm) {
+  const Vec3d normal = normalize(out - in * (n1 / n2));
+  const double cos1 = std::min(1.0, std::abs(dot(normal, in))),
+               cos2 = std::min(1.0, std::abs(dot(normal, out)));
+  return surfaceTransmittance(coating, n1, n2, cos1, cos2, wavelengthNm);
 }
 
 }  // namespace
 
-template <bool kFromFilm>
+// kCoated: the system models coatings (coating_ is set); a separate
+// instantiation so that the lossless trace carries no Fresnel bookkeeping.
+template <bool kFromFilm, bool kCoated>
 std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm,
                                          std::vector<Vec3d>* path) const {
   if (!validInput<kFromFilm>(ray)) return std::nullopt;
@@ -161,25 +174,41 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
   Vec3d d = normalize(ray.direction);
   // Index on the side the ray comes from, carried along for dispersion.
   double nFrom = dLine ? 1.0 : (kFromFilm ? surfaces[count - 1].after.index(wavelengthNm) : 1.0);
+  double transmittance = ray.transmittance;
   for (int k = 0; k < count; ++k) {
     const int i = kFromFilm ? count - 1 - k : k;
     const TraceSurface& s = surfaces[i];
-    double eta = 0.0;
+    double eta = 0.0, n1 = 1.0, n2 = 1.0;
     if (dLine) {
       if (s.refracts) eta = kFromFilm ? s.etaFromFilm : s.etaFromScene;
+      if constexpr (kCoated) {
+        const double before = i > 0 ? surfaces[i - 1].ndAfter : 1.0;
+        n1 = kFromFilm ? s.ndAfter : before;
+        n2 = kFromFilm ? before : s.ndAfter;
+      }
     } else {
-      const double n1 = nFrom;
+      n1 = nFrom;
       nFrom =
           kFromFilm ? (i > 0 ? surfaces[i - 1].after.index(wavelengthNm) : 1.0) : s.after.index(wavelengthNm);
+      n2 = nFrom;
       if (!s.isStop && n1 != nFrom) eta = n1 / nFrom;
     }
+    const Vec3d in = d;
     if (!step<kFromFilm>(s, eta, o, d, path)) return std::nullopt;
+    if constexpr (kCoated)
+      if (eta != 0.0) transmittance *= refractionTransmittance(*coating_, in, d, n1, n2, wavelengthNm);
   }
-  return finished(o, d);
+  return finished(o, d, transmittance);
 }
 
 void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const {
   if (out.size() != rays.size()) throw std::invalid_argument("traceFromFilm: as many outputs as rays");
+  // Coatings: the one-ray trace, which carries the transmittance.
+  if (coating_) {
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      out[i] = trace<true, true>(rays[i], kWavelengthDNm, nullptr);
+    return;
+  }
   // The vector step knows only spheres: aspheric lenses take the one-lane
   // loop below, which calls the same step() as the one-ray trace.
   if (trace_lanes::available() && !hasAspheres_) return traceFromFilmVectorized(rays, {}, out);
@@ -203,7 +232,8 @@ void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::opt
       for (std::size_t l = 0; l < lanes; ++l)
         if (alive[l]) alive[l] = step<true>(s, eta, o[l], d[l], nullptr);
     }
-    for (std::size_t l = 0; l < lanes; ++l) out[first + l] = alive[l] ? finished(o[l], d[l]) : std::nullopt;
+    for (std::size_t l = 0; l < lanes; ++l)
+      out[first + l] = alive[l] ? finished(o[l], d[l], rays[first + l].transmittance) : std::nullopt;
   }
 }
 
@@ -211,8 +241,15 @@ void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<const do
                                std::span<std::optional<LensRay>> out) const {
   if (out.size() != rays.size() || wavelengthsNm.size() != rays.size())
     throw std::invalid_argument("traceFromFilm: as many outputs and wavelengths as rays");
+  // Coatings: the one-ray trace, which carries the transmittance.
+  if (coating_) {
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      out[i] = trace<true, true>(rays[i], wavelengthsNm[i], nullptr);
+    return;
+  }
   if (trace_lanes::available() && !hasAspheres_) return traceFromFilmVectorized(rays, wavelengthsNm, out);
-  for (std::size_t i = 0; i < rays.size(); ++i) out[i] = trace<true>(rays[i], wavelengthsNm[i], nullptr);
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    out[i] = trace<true, false>(rays[i], wavelengthsNm[i], nullptr);
 }
 
 // The same trace with spherical surfaces stepped in vector registers
@@ -275,19 +312,21 @@ void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays, std::spa
       }
     }
     for (std::size_t l = 0; l < lanes; ++l)
-      out[first + l] =
-          L.alive[l] ? finished({L.ox[l], L.oy[l], L.oz[l]}, {L.dx[l], L.dy[l], L.dz[l]}) : std::nullopt;
+      out[first + l] = L.alive[l] ? finished({L.ox[l], L.oy[l], L.oz[l]}, {L.dx[l], L.dy[l], L.dz[l]},
+                                             rays[first + l].transmittance)
+                                  : std::nullopt;
   }
 }
 
 std::optional<LensRay> LensSystem::traceFromFilm(const LensRay& ray, double wavelengthNm,
                                                  std::vector<Vec3d>* path) const {
-  return trace<true>(ray, wavelengthNm, path);
+  return coating_ ? trace<true, true>(ray, wavelengthNm, path) : trace<true, false>(ray, wavelengthNm, path);
 }
 
 std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray, double wavelengthNm,
                                                   std::vector<Vec3d>* path) const {
-  return trace<false>(ray, wavelengthNm, path);
+  return coating_ ? trace<false, true>(ray, wavelengthNm, path)
+                  : trace<false, false>(ray, wavelengthNm, path);
 }
 
 }  // namespace lensrt

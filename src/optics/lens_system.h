@@ -9,11 +9,13 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "core/vec.h"
+#include "optics/coating.h"
 #include "optics/glass.h"
 #include "optics/paraxial.h"
 #include "optics/prescription.h"
@@ -23,15 +25,22 @@ namespace lensrt {
 struct LensRay {
   Vec3d origin;
   Vec3d direction;  // unit length on output; any non-zero length on input
+  // The fraction of the light the surfaces transmit (Fresnel losses): the
+  // input's value times every refracting surface's, when the system models
+  // coatings; unchanged otherwise.
+  double transmittance = 1.0;
 };
 
 class LensSystem {
  public:
-  // The prescription is validated (throws InputError).
-  explicit LensSystem(LensPrescription prescription);
+  // The prescription is validated (throws InputError). With a coating the
+  // traces multiply each ray's transmittance by every refracting surface's
+  // Fresnel transmittance (optics/coating.h); without one, glass is lossless.
+  explicit LensSystem(LensPrescription prescription, std::optional<Coating> coating = std::nullopt);
 
   const LensPrescription& prescription() const { return prescription_; }
   const ParaxialData& paraxial() const { return paraxial_; }
+  std::optional<Coating> coating() const { return coating_; }
   int surfaceCount() const { return static_cast<int>(surfaces_.size()); }
   double surfaceZ(int i) const { return surfaces_[i].z; }
   double rearZ() const { return surfaces_.back().z; }
@@ -77,8 +86,9 @@ class LensSystem {
     double etaFromScene = 1.0;  // ndBefore / ndAfter
     bool refracts = false;
     bool isStop = false;
-    bool aspheric = false;  // traced by asphereStep (optics/asphere.h)
-    AsphereProfile profile;
+    // Aspheric surfaces only (asphereStep, optics/asphere.h); shared and
+    // immutable, so spherical surfaces stay small in the trace loop's cache.
+    std::shared_ptr<const AsphereProfile> asphere;
     double ndAfter = 1.0;  // index after the surface (toward the film) at the d line
     Dispersion after;
   };
@@ -90,13 +100,14 @@ class LensSystem {
   // Empty wavelengthsNm: every ray at the d line.
   void traceFromFilmVectorized(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
                                std::span<std::optional<LensRay>> out) const;
-  template <bool kFromFilm>
+  template <bool kFromFilm, bool kCoated>
   std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path) const;
 
   LensPrescription prescription_;
   ParaxialData paraxial_;
   std::vector<TraceSurface> surfaces_;
   bool hasAspheres_ = false;
+  std::optional<Coating> coating_;
 };
 
 // Refract unit direction d at a surface with unit normal n facing against d

@@ -11,10 +11,14 @@ FilmIrradiance filmIrradiance(const LensSystem& lens, double filmDistanceMm, dou
                               double wavelengthNm) {
   const double planeZ = lens.rearZ();
   const Vec3d film{filmRadiusMm, 0.0, planeZ + filmDistanceMm};
-  const auto passes = [&](double x, double y) {
+  // The fraction that gets through: 0 when blocked, else the Fresnel
+  // transmittance when the lens models coatings (1 when it does not).
+  const auto transmitted = [&](double x, double y) {
     const LensRay ray{film, Vec3d{x, y, planeZ} - film};
-    return lens.traceFromFilm(ray, wavelengthNm).has_value();
+    const auto out = lens.traceFromFilm(ray, wavelengthNm);
+    return out ? out->transmittance : 0.0;
   };
+  const auto passes = [&](double x, double y) { return transmitted(x, y) > 0.0; };
   // Every passing ray leaves the rear surface inside its aperture; where its
   // line meets the vertex plane differs by the cap's depth times the slope.
   const Surface& rear = lens.prescription().surfaces.back();
@@ -50,10 +54,11 @@ FilmIrradiance filmIrradiance(const LensSystem& lens, double filmDistanceMm, dou
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const double x = cx + (i + 0.5 - 0.5 * nx) * step, y = (j + 0.5 - 0.5 * ny) * step;
-      if (!passes(x, y)) continue;
+      const double t = transmitted(x, y);
+      if (!(t > 0.0)) continue;
       const double dx = x - film.x, r2 = dx * dx + y * y + d * d;
       const double cos2 = d * d / r2;
-      omega += cos2 * cos2 / (d * d);
+      omega += t * (cos2 * cos2 / (d * d));
       area += 1.0;
       sx += x;
     }

@@ -12,6 +12,9 @@
 // distortion. Relative illumination is RI(x) = E(x) / E(0). On the axis of a
 // lens at infinity, Omega(0) = pi / (4 N^2) for its working f-number N.
 //
+// With a lens that models coatings each passing ray counts with its Fresnel
+// transmittance (Omega is then the transmitted projected solid angle).
+//
 // The passing set is found by a coarse grid over a generous square, then
 // integrated by the midpoint rule on a fine grid over its bounding box:
 // deterministic, no sampling noise.

@@ -249,5 +249,40 @@ TEST(LensCamera, BatchedRaysEqualOneAtATime) {
   }
 }
 
+// Coatings scale each camera ray's weight by its Fresnel transmittance and
+// leave the geometry alone; the camera says which coating it models.
+TEST(LensCamera, CoatingsWeightRaysByTheirTransmittance) {
+  Warnings warnings;
+  LensCameraParams p;
+  p.fNumber = 2.8;
+  p.focusMetres = 2.0;
+  const LensCamera lossless(Transform(), test::testFilm(), test::lectureDoubleGauss(0.5), p, Exposure{},
+                            warnings);
+  p.coatings = Coating::None;
+  const LensCamera uncoated(Transform(), test::testFilm(), test::lectureDoubleGauss(0.5), p, Exposure{},
+                            warnings);
+  EXPECT_EQ(lossless.info().coatings, "");
+  EXPECT_EQ(uncoated.info().coatings, "none");
+  EXPECT_NE(uncoated.describe().find("coatings=none"), std::string::npos);
+  SplitMix64 rng(5);
+  int passed = 0;
+  for (int i = 0; i < 200; ++i) {
+    CameraSample s;
+    s.film = {float(rng.uniform() * 640), float(rng.uniform() * 360)};
+    s.lens = {float(rng.uniform()), float(rng.uniform())};
+    const auto a = lossless.generateRay(s), b = uncoated.generateRay(s);
+    ASSERT_EQ(a.has_value(), b.has_value());
+    if (!a) continue;
+    ++passed;
+    EXPECT_EQ(std::memcmp(&a->ray.direction, &b->ray.direction, sizeof(Vec3f)), 0);
+    // Ten uncoated glass-air surfaces of n ~ 1.6-1.7 (about 6% each) and two
+    // cemented ones: roughly 0.94^8 of the light gets through.
+    const double ratio = b->weight / a->weight;
+    EXPECT_GT(ratio, 0.55);
+    EXPECT_LT(ratio, 0.7);
+  }
+  EXPECT_GT(passed, 100);
+}
+
 }  // namespace
 }  // namespace lensrt
