@@ -10,8 +10,12 @@
 namespace lensrt {
 
 bool hasDispersion(const LensPrescription& lens) {
-  for (const Surface& s : lens.surfaces)
-    if (s.medium.vd > 0.0 && s.medium.nd > 1.0) return true;
+  // Whatever the model (Abbe number or Sellmeier coefficients): an index
+  // that differs between the F and C lines.
+  for (const Surface& s : lens.surfaces) {
+    const Dispersion d = Dispersion::of(s.medium);
+    if (d.index(kWavelengthFNm) != d.index(kWavelengthCNm)) return true;
+  }
   return false;
 }
 

@@ -12,7 +12,7 @@
 
 namespace lensrt {
 
-// True when any medium has dispersion data (V_d > 0 in glass).
+// True when any medium has dispersion data (V_d or Sellmeier coefficients).
 bool hasDispersion(const LensPrescription& lens);
 
 // The prescription with every medium's n_d replaced by its index at
