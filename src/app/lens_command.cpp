@@ -219,7 +219,7 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
         "  chromatic aberration  axial {:.4f} mm (BFL at C minus F), lateral {} (F minus C at {:.2f} mm)\n",
         axialColor, lateral ? fmt::format("{:.2f} um", lateral->um()) : "n/a", halfDiagonal);
   else
-    fmt::print("  chromatic aberration  none modelled (no Abbe numbers)\n");
+    fmt::print("  chromatic aberration  none (no Abbe numbers or Sellmeier coefficients)\n");
   fmt::print("  axial transmittance   {:.1f}% of an axial bundle at the d line (--coatings {})\n",
              100.0 * transmittance, coatingName(coating));
   return 0;

@@ -296,7 +296,8 @@ LensPlot plotChromatic(const LensView& view) {
                ? fmt::format("axial colour (BFL at C minus F) {:.4f} mm; lateral colour at the corner {}",
                              axialColorMm(view.lens.prescription()),
                              corner ? fmt::format("{:.2f} \u00b5m", corner->um()) : std::string("n/a"))
-               : std::string("No dispersion data (no Abbe numbers): every wavelength focuses alike."),
+               : std::string("No dispersion data (no Abbe numbers or Sellmeier coefficients): every "
+                             "wavelength focuses alike."),
            "class=\"legend\"");
   return {std::move(svg), std::move(table)};
 }
