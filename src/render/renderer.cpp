@@ -59,10 +59,13 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           cs.lens = sampler.get2D(kDimLens);
           // The sampler's 1D stream is a scrambled van der Corput sequence in
           // the sample index: a pixel's wavelengths are stratified (any
-          // power-of-two prefix, so passes and resumes keep it).
-          const WavelengthSample ws = sampleWavelength(sampler.get1D(kDimWavelength));
-          cs.wavelengthNm = ws.wavelengthNm;
-          if (spectral) spectralWeights[k] = ws.weight;
+          // power-of-two prefix, so passes and resumes keep it). Cameras
+          // that ignore the wavelength keep the default.
+          if (spectral) {
+            const WavelengthSample ws = sampleWavelength(sampler.get1D(kDimWavelength));
+            cs.wavelengthNm = ws.wavelengthNm;
+            spectralWeights[k] = ws.weight;
+          }
         }
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
         for (std::size_t k = 0; k < n; ++k) {
