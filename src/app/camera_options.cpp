@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "app/aperture_mask_file.h"
 #include "app/lens_loading.h"
 #include "app/option_checks.h"
 #include "camera/lens_camera.h"
@@ -139,6 +140,9 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
   cmd.add_option("--blade-rotation", o.bladeRotationDegrees,
                  "rotation of the blade polygon in degrees, e.g. 15")
       ->check(numberIn(-360.0, 360.0, "degrees"));
+  cmd.add_option("--aperture-mask", o.apertureMask,
+                 "grey-scale image (PNG) over the stop of --camera lens, white transmits: bokeh takes its "
+                 "shape; instead of --blades");
   cmd.add_option("--focal-length", o.focalLengthMm,
                  "focal length in mm: without --lens the thin lens's and pinhole's (default: from the glTF "
                  "camera's field of view); with --lens the design is scaled to it")
@@ -294,6 +298,8 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   // What the camera models still reject is about the lens (makeCamera names
   // it) or the glTF camera (RenderJob names the scene).
   const std::string lensName = lens ? lens->name : "";
+  if (!o.apertureMask.empty() && o.model != "lens")
+    throw CLI::ValidationError("--aperture-mask", "needs --camera lens (the mask sits at the lens's stop)");
   if (o.model == "pinhole") {
     const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
     return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
@@ -319,6 +325,10 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
     return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
   }
   LensCameraParams p;
+  if (!o.apertureMask.empty()) {
+    if (o.blades) throw CLI::ValidationError("--aperture-mask", "replaces --blades: give one of them");
+    p.mask = std::make_shared<const ApertureMask>(readApertureMask(o.apertureMask));
+  }
   p.fNumber = fNumber;
   p.focusMetres = focusM;
   p.aperture = aperture;

@@ -3,7 +3,7 @@
 //
 //   --camera pinhole|thin|thick|lens   --lens FILE|NAME   --fstop N
 //   --focus METRES|auto|inf   --focus-pixel X,Y   --sensor WxH|NAME
-//   --blades N   --blade-rotation DEG   --focal-length MM
+//   --blades N   --blade-rotation DEG   --aperture-mask FILE   --focal-length MM
 //   --exposure normalized|physical   --shutter SECONDS   --iso N
 //   --dispersion on|off
 //   --coatings none|single|multi
@@ -35,6 +35,7 @@ struct CameraOptions {
   std::string sensor = "full-frame";
   int blades = 0;
   double bladeRotationDegrees = 0.0;
+  std::string apertureMask;  // grey-scale image over the full lens's stop; empty: none
   std::optional<double> focalLengthMm;
   std::string exposure = "normalized";
   std::string shutter;  // seconds, "0.01" or "1/100"; empty: 1/100

@@ -28,10 +28,8 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
   const ParaxialData& p = lens_->paraxial();
   fNumber_ = p.fNumber * widen;
   entrancePupilZ_ = p.entrancePupilZ;
-  if (params.aperture.blades) {
-    const double stopRadius = lens_->prescription().surfaces[p.stopIndex].apertureDiameter / 2.0;
-    polygon_.emplace(stopRadius / widen, params.aperture);
-  }
+  stopRadius_ = lens_->prescription().surfaces[p.stopIndex].apertureDiameter / 2.0;
+  if (params.aperture.blades) polygon_.emplace(stopRadius_ / widen, params.aperture);
   filmZ_ = lens_->rearZ() + focusFilmDistance(*lens_, params.focusMetres * 1000.0);
   bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, sensorHalfDiagonalMm(film) * (1.0 + 1e-6),
                                               params.pupilIntervals);
@@ -45,7 +43,8 @@ std::string LensCamera::describe() const {
                 focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
   // Part of the render's identity (merge, resume): on and off differ, and so do coatings.
   return std::string(buf) + (dispersion_ ? " dispersion=on" : "") +
-         (params_.coatings ? " coatings=" + coatingName(*params_.coatings) : std::string());
+         (params_.coatings ? " coatings=" + coatingName(*params_.coatings) : std::string()) +
+         (params_.mask ? " mask=" + params_.mask->describe() : std::string());
 }
 
 CameraInfo LensCamera::info() const {
@@ -72,14 +71,18 @@ double irradianceIntegrand(const Vec3d& filmPoint, const Vec3d& pupilPoint) {
 }  // namespace
 
 std::optional<LensRay> LensCamera::traceLens(const LensRay& in, double wavelengthNm) const {
-  if (!polygon_) return lens_->traceFromFilm(in, wavelengthNm);
+  if (!polygon_ && !params_.mask) return lens_->traceFromFilm(in, wavelengthNm);
   std::vector<Vec3d> path;
   path.reserve(lens_->surfaceCount());
   std::optional<LensRay> out = lens_->traceFromFilm(in, wavelengthNm, &path);
+  if (!out) return out;
   // The path runs from the rear surface to the front one.
-  if (out) {
-    const Vec3d& hit = path.at(lens_->surfaceCount() - 1 - lens_->paraxial().stopIndex);
-    if (!polygon_->contains({hit.x, hit.y})) out.reset();
+  const Vec3d& hit = path.at(lens_->surfaceCount() - 1 - lens_->paraxial().stopIndex);
+  if (polygon_ && !polygon_->contains({hit.x, hit.y})) return std::nullopt;
+  if (params_.mask) {
+    const double t = params_.mask->transmittance({hit.x, hit.y}, stopRadius_);
+    if (!(t > 0.0)) return std::nullopt;
+    out->transmittance *= t;
   }
   return out;
 }
@@ -118,7 +121,7 @@ std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& 
 
 void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
                                          std::span<std::optional<CameraRay>> out) const {
-  if (polygon_) return Camera::generateCameraSpaceRays(samples, out);
+  if (polygon_ || params_.mask) return Camera::generateCameraSpaceRays(samples, out);
   // In chunks on the stack: the lens traces a chunk's rays together.
   constexpr std::size_t kChunk = 4 * LensSystem::kTraceLanes;
   std::array<LensRay, kChunk> rays;

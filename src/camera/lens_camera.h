@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "camera/aperture.h"
+#include "camera/aperture_mask.h"
 #include "camera/camera.h"
 #include "camera/exposure.h"
 #include "core/warnings.h"
@@ -23,6 +24,9 @@ struct LensCameraParams {
   // Fresnel losses at every refracting surface (optics/coating.h): each
   // ray's weight times its transmittance. nullopt: lossless glass.
   std::optional<Coating> coatings;
+  // A grey-scale mask over the stop (camera/aperture_mask.h): each ray's
+  // weight times the mask where it crosses the stop. Null: the open stop.
+  std::shared_ptr<const ApertureMask> mask;
 };
 
 // The full element stack (Kolb et al. 1995): film point -> a point inside the
@@ -70,7 +74,8 @@ class LensCamera final : public Camera {
     double weight = 0.0;  // the irradiance integrand over the pdf, times the exposure scale
   };
   PupilRay pupilRay(const CameraSample& sample) const;
-  // The exact trace, then the polygonal aperture when blades are set.
+  // The exact trace, then the polygonal aperture when blades are set and
+  // the mask's transmittance at the stop when there is one.
   std::optional<LensRay> traceLens(const LensRay& in, double wavelengthNm) const;
   std::optional<CameraRay> cameraRay(const std::optional<LensRay>& out, double weight) const;
 
@@ -79,6 +84,7 @@ class LensCamera final : public Camera {
   std::unique_ptr<LensSystem> lens_;
   std::unique_ptr<ExitPupilBounds> bounds_;
   std::optional<Aperture> polygon_;  // in the stop plane, when blades are set
+  double stopRadius_ = 0.0;          // of the stopped-down stop (mm): the mask's scale
   double fNumber_ = 0.0;
   double filmZ_ = 0.0;
   double entrancePupilZ_ = 0.0;
