@@ -117,6 +117,11 @@ void validatePrescription(const LensPrescription& lens) {
       fail(&s, i, "refractive index " + std::to_string(s.medium.nd) + " is outside [1, 4]");
     if (s.medium.vd < 0.0 || s.medium.vd > 200.0)
       fail(&s, i, "Abbe number " + std::to_string(s.medium.vd) + " is outside [0, 200]");
+    if (s.medium.sellmeier) {
+      if (s.medium.nd == 1.0) fail(&s, i, "Sellmeier coefficients given for air (n_d = 1)");
+      if (const std::string problem = sellmeierProblem(*s.medium.sellmeier); !problem.empty())
+        fail(&s, i, problem);
+    }
     if (s.isAspheric()) {
       // The sag and its slope must exist over the whole clear aperture, and
       // stay within the lens's size (huge polynomial terms are garbage).
