@@ -157,8 +157,6 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   const PixelRegion region = partOfFrame(args, job.width(), job.height());
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
-  holding = false;
-  for (const std::string& message : held) print(message);
   const ImageMetadata identity = job.identity(*camera, settings);
   FilmState state =
       args.resume.empty() ? FilmState(region, settings.aovs) : readCheckpoint(args.resume, identity, region);
@@ -166,6 +164,9 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
     throw CLI::ValidationError(
         "--spp", fmt::format("{} has {} samples per pixel already, more than --spp {}", args.resume,
                              state.samplesDone(), settings.samplesPerPixel));
+
+  holding = false;
+  for (const std::string& message : held) print(message);
 
   // Passes, checkpoints and signals (the handlers only while rendering).
   const InterruptHandler interrupt;
