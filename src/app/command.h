@@ -8,8 +8,11 @@
 
 namespace lensrt {
 
+class Cluster;
+
 struct CommandContext {
-  std::string commandLine;  // the whole invocation, recorded in output metadata
+  std::string commandLine;     // the whole invocation, recorded in output metadata
+  Cluster* cluster = nullptr;  // the MPI job (owned by main), never null once main runs
 };
 
 // Returns the process exit status. Bad input is reported by throwing

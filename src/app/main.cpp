@@ -3,12 +3,14 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <new>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "app/cluster.h"
 #include "app/command.h"
 #include "core/error.h"
 
@@ -78,9 +80,11 @@ int main(int argc, char** argv) {
       "lensrt: a path tracer that renders glTF scenes through real camera optics.\n"
       "Example: lensrt render scenes/dof_row.gltf --spp 64 -o out/dof_row.exr",
       "lensrt"};
-  app.set_version_flag("--version", std::string(LENSRT_VERSION));
+  lensrt::Cluster cluster(argc, argv);
+  app.set_version_flag("--version", std::string(LENSRT_VERSION) +
+                                        (lensrt::Cluster::builtWithMpi() ? " (MPI: yes)" : " (MPI: no)"));
   app.require_subcommand(1);
-  const lensrt::CommandContext context{joinCommandLine(argc, argv)};
+  const lensrt::CommandContext context{joinCommandLine(argc, argv), &cluster};
 
   std::vector<std::pair<const CLI::App*, lensrt::CommandAction>> commands;
   const auto add = [&](auto registerFn) {
@@ -96,13 +100,12 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // Under MPI every rank parses the same command line: rank 0 alone speaks.
+    if (!cluster.isMain()) return e.get_exit_code() == 0 ? 0 : 2;
+    if (dynamic_cast<const CLI::CallForHelp*>(&e) || dynamic_cast<const CLI::CallForAllHelp*>(&e) ||
+        dynamic_cast<const CLI::CallForVersion*>(&e))
+      return app.exit(e);
     if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
       fmt::print(stderr, "lensrt: error: {}\n", unknown);
       return 2;
@@ -111,24 +114,43 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  // Only `render` is shared between the ranks of an MPI job; other commands
+  // run on rank 0 alone.
+  const CLI::App* render = commands.front().first;
+  const bool shared = cluster.size() > 1 && render->parsed();
+  if (cluster.size() > 1 && !shared && !cluster.isMain()) return 0;
+  // One error line. In a shared render, a rank failing in its set-up (scene,
+  // camera) waits for the others to get there, so that the job reports the
+  // lowest failing rank's error once; after the set-up it ends the job.
+  const auto fail = [&](int status, const std::string& line) {
+    if (shared && !cluster.agreed()) {
+      const auto failure = cluster.agree(lensrt::Cluster::Failure{cluster.rank(), status, line});
+      if (cluster.isMain())
+        fmt::print(stderr, "lensrt: error: {}{}\n",
+                   failure->rank == 0 ? "" : fmt::format("rank {} of {}: ", failure->rank, cluster.size()),
+                   failure->line);
+      return failure->status;
+    }
+    if (shared) {
+      fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", cluster.rank(), cluster.size(), line);
+      std::fflush(stderr);
+      cluster.abort(status);
+    }
+    fmt::print(stderr, "lensrt: error: {}\n", line);
+    return status;
+  };
   try {
     for (const auto& [sub, action] : commands)
       if (sub->parsed()) return action();
   } catch (const CLI::ParseError& e) {
     // Value checks done after parsing (units, ranges) are usage errors too.
-    fmt::print(stderr, "lensrt: error: {}\n", e.what());
-    return 2;
+    return fail(2, e.what());
   } catch (const lensrt::InputError& e) {
-    fmt::print(stderr, "lensrt: error: {}\n", e.what());
-    return 1;
+    return fail(1, e.what());
   } catch (const std::bad_alloc&) {
-    fmt::print(
-        stderr,
-        "lensrt: error: out of memory (the scene, its textures or the image at this --res do not fit)\n");
-    return 1;
+    return fail(1, "out of memory (the scene, its textures or the image at this --res do not fit)");
   } catch (const std::exception& e) {
-    fmt::print(stderr, "lensrt: error: {}\n", e.what());
-    return 1;
+    return fail(1, e.what());
   }
   return 2;
 }

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -14,7 +15,9 @@
 
 #include "app/camera_options.h"
 #include "app/checkpoint.h"
+#include "app/cluster.h"
 #include "app/command.h"
+#include "app/distributed_render.h"
 #include "app/interrupt.h"
 #include "app/option_checks.h"
 #include "app/output_file.h"
@@ -105,7 +108,13 @@ std::string checkTile(const std::string& text) {
   return "";
 }
 
-int runRender(const RenderArgs& args, const CommandContext& context) {
+int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
+  // Under MPI, rank 0 alone reads and writes the output and speaks; the
+  // other ranks load the scene, make the camera and render what it sends.
+  Cluster& cluster = *context.cluster;
+  const bool shared = cluster.size() > 1, leader = cluster.isMain();
+  RenderArgs args = givenArgs;
+  if (!leader) args.quiet = true;
   // 1. Options.
   SceneOptions sceneOptions;
   sceneOptions.scene = args.scene;
@@ -124,12 +133,12 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   // Everything that can be checked without rendering is checked first, so
   // that a long render never ends in an error.
   std::error_code ec;
-  checkOutputFile(args.output);
+  if (leader) checkOutputFile(args.output);
   const bool exr = std::filesystem::path(args.output).extension() == ".exr";
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw CLI::ValidationError("--checkpoint/--resume",
                                "need an .exr output (-o OUT.exr), the image that is continued");
-  if (!args.resume.empty() && !std::filesystem::exists(args.resume, ec))
+  if (leader && !args.resume.empty() && !std::filesystem::exists(args.resume, ec))
     throw InputError(args.resume, "no such checkpoint");
   const std::string& envFile = sceneOptions.environment.file;
   if (!envFile.empty() && !std::filesystem::exists(envFile, ec))
@@ -158,8 +167,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
   const ImageMetadata identity = job.identity(*camera, settings);
-  FilmState state =
-      args.resume.empty() ? FilmState(region, settings.aovs) : readCheckpoint(args.resume, identity, region);
+  FilmState state = args.resume.empty() || !leader ? FilmState(region, settings.aovs)
+                                                   : readCheckpoint(args.resume, identity, region);
   if (state.samplesDone() > settings.samplesPerPixel)
     throw CLI::ValidationError(
         "--spp", fmt::format("{} has {} samples per pixel already, more than --spp {}", args.resume,
@@ -167,6 +176,20 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
 
   holding = false;
   for (const std::string& message : held) print(message);
+  if (shared) {
+    // Every rank is set up: go on together, or stop together with the first error.
+    if (const auto failure = cluster.agree(std::nullopt)) {
+      if (leader)
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
+                   failure->line);
+      return failure->status;
+    }
+  }
+  if (!leader) {
+    const InterruptHandler interrupt;
+    workForMain(cluster, *camera, job.integrator(), settings, [&] { return interrupt.signal(); });
+    return interrupt.signal() ? interrupt.exitStatus() : 0;
+  }
 
   // Passes, checkpoints and signals (the handlers only while rendering).
   const InterruptHandler interrupt;
@@ -190,7 +213,21 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
       lastCheckpoint = std::chrono::steady_clock::now();
     };
   bool finished = false;
-  const RenderJobResult result = job.renderPasses(*camera, settings, state, control, args.quiet, finished);
+  int rankSignal = 0;  // a signal another rank received
+  RenderJobResult result;
+  if (shared) {
+    {
+      const int remaining = std::max(0, settings.samplesPerPixel - state.samplesDone());
+      Progress progress(region.pixelCount() * std::uint64_t(remaining),
+                        Progress::styleFor(stderr, args.quiet));
+      finished = renderAcrossRanks(cluster, *camera, job.integrator(), settings, state, control, &progress,
+                                   rankSignal);
+    }
+    result.output = renderOutput(*camera, state);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  } else {
+    result = job.renderPasses(*camera, settings, state, control, args.quiet, finished);
+  }
 
   // 3. Write: with the running sums when it can be continued.
   if (args.checkpointSeconds > 0 || !finished)
@@ -204,7 +241,7 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
     if (!args.quiet)
       fmt::print(stderr, "lensrt: interrupted: wrote {} with {} of {} spp (continue with --resume {})\n",
                  args.output, state.samplesDone(), settings.samplesPerPixel, args.output);
-    return interrupt.exitStatus();
+    return interrupt.signal() ? interrupt.exitStatus() : 128 + rankSignal;
   }
   if (!args.quiet)
     fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output,

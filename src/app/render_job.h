@@ -46,6 +46,7 @@ class RenderJob {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  const Integrator& integrator() const { return *integrator_; }
 
   // One of the four models for these options, framed by the glTF camera;
   // --focus auto asks the scene what the focus pixel sees.

@@ -1,0 +1,44 @@
+// The MPI job this process belongs to (`mpirun -np N lensrt ...`, `srun`),
+// or a job of one. MPI is joined only when an MPI launcher started the
+// process, so a plain `lensrt` never pays for it; a build without MPI is
+// always a job of one.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace lensrt {
+
+class Cluster {
+ public:
+  Cluster(int& argc, char**& argv);
+  ~Cluster();
+  Cluster(const Cluster&) = delete;
+  Cluster& operator=(const Cluster&) = delete;
+
+  static bool builtWithMpi();
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool isMain() const { return rank_ == 0; }
+
+  // A rank's error: its one line (without "lensrt: error: ") and exit status.
+  struct Failure {
+    int rank = 0;
+    int status = 1;
+    std::string line;
+  };
+  // Collective, called once by every rank when its set-up is done (or has
+  // failed): returns the failure of the lowest failing rank, the same on
+  // every rank, so that a scene error is reported once and no rank waits
+  // for one that has given up.
+  std::optional<Failure> agree(const std::optional<Failure>& mine);
+  bool agreed() const { return agreed_; }
+  // Ends every rank of the job with `status` (an error after set-up).
+  [[noreturn]] void abort(int status) const;
+
+ private:
+  int rank_ = 0, size_ = 1;
+  bool initialized_ = false, agreed_ = false;
+};
+
+}  // namespace lensrt

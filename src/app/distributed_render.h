@@ -1,0 +1,34 @@
+// A render shared by the ranks of an MPI job. Rank 0 holds the FilmState and
+// runs the passes; in each pass it hands out horizontal strips of the region
+// one at a time to whichever rank asks (its own render thread included),
+// sending the strip's running sums with it and taking them back with the
+// pass's samples added. A pixel's samples are still summed in sample order
+// by one task, so the image has the bits of a render in one process, for
+// any number of ranks and any order the strips come back in.
+#pragma once
+
+#include <functional>
+
+#include "app/cluster.h"
+#include "camera/camera.h"
+#include "render/film_state.h"
+#include "render/integrator.h"
+#include "render/progress.h"
+#include "render/renderer.h"
+
+namespace lensrt {
+
+// Rank 0: continues `state` to settings.samplesPerPixel like renderPasses,
+// with every rank's help. Stops early (returning false) when `control` asks
+// to or a rank reports a signal; `signal` then holds the first one reported
+// (0 when none). Ends the other ranks' workForMain in both cases.
+bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integrator& integrator,
+                       const RenderSettings& settings, FilmState& state, const PassControl& control,
+                       Progress* progress, int& signal);
+
+// The other ranks: render the strips rank 0 sends until it says the job is
+// over. `signal()` (0: none) is reported to rank 0 with each strip.
+void workForMain(const Cluster& cluster, const Camera& camera, const Integrator& integrator,
+                 const RenderSettings& settings, const std::function<int()>& signal);
+
+}  // namespace lensrt
