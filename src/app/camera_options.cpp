@@ -167,6 +167,12 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "quarter-wave MgF2 layer at 550 nm) or multi (0.5% reflectance per surface); default: "
                  "lossless glass, as pbrt")
       ->check(CLI::IsMember({"none", "single", "multi"}));
+  cmd.add_option("--film", o.film,
+                 "what a pixel records: radiance (the mean radiance along the camera rays, no cos^4, no "
+                 "bellows factor, no exposure scale: pbrt's, Cycles' and Mitsuba's pinhole; the pinhole's "
+                 "default, pinhole only) or irradiance (the physical film, scaled by --exposure; the default "
+                 "of thin, thick and lens)")
+      ->check(CLI::IsMember({"radiance", "irradiance"}));
 }
 
 FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {
@@ -197,6 +203,18 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& glt
   if (gltf.orthographic)
     warnings.warn("camera '" + gltf.name + "' is orthographic; rendering it in perspective");
 
+  // Radiance film is the ideal pinhole's: a lens forms an image on a film, and
+  // what reaches the film is irradiance (a mean radiance over the pupil would
+  // hide the vignetting the lens models are there to show).
+  const bool radianceFilm = o.film == "radiance" || (o.film.empty() && o.model == "pinhole");
+  if (radianceFilm && o.model != "pinhole")
+    throw CLI::ValidationError("--film",
+                               "radiance film is the pinhole's; --camera " + o.model +
+                                   " records film irradiance (--film irradiance, scaled by --exposure)");
+  if (radianceFilm && o.exposure == "physical")
+    throw CLI::ValidationError("--exposure",
+                               "physical exposure needs the irradiance film: add --film irradiance "
+                               "(the pinhole's default film records radiance)");
   if (o.exposure != "physical" && (!o.shutter.empty() || o.iso))
     warnings.warn("--shutter and --iso only apply with --exposure physical; ignored");
 
@@ -302,7 +320,9 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
     throw CLI::ValidationError("--aperture-mask", "needs --camera lens (the mask sits at the lens's stop)");
   if (o.model == "pinhole") {
     const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
-    return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
+    if (o.film == "irradiance")
+      return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
+    return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, lensName);
   }
   if (o.model == "thin") {
     ThinLensParams p;
@@ -363,6 +383,7 @@ ImageMetadata cameraMetadata(const Camera& camera) {
       // (tools/validate-cycles does): glTF world space, metres, row by row.
       {"lensrt:world_from_camera", matrixText(camera.worldFromCamera().matrix())},
       {"lensrt:dispersion", i.dispersion ? "on" : "off"},
+      {"lensrt:film", i.film},
   };
 }
 

@@ -7,6 +7,7 @@
 //   --exposure normalized|physical   --shutter SECONDS   --iso N
 //   --dispersion on|off
 //   --coatings none|single|multi
+//   --film radiance|irradiance
 //
 // Bad values are usage errors (CLI::ValidationError naming the flag, exit 2).
 #pragma once
@@ -42,6 +43,9 @@ struct CameraOptions {
   std::optional<double> iso;
   std::string dispersion = "on";  // the full lens traces each sample at its wavelength
   std::string coatings;           // --coatings none|single|multi for the full lens; empty: lossless glass
+  // "radiance", "irradiance", or empty for the model's default: radiance for
+  // the pinhole, irradiance for thin, thick and lens (which refuse radiance).
+  std::string film;
   std::filesystem::path lensDir;  // the library; addCameraOptions sets the installed one
 };
 
@@ -71,7 +75,7 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& options, const CameraDes
 
 // lensrt:camera_model, lensrt:lens, lensrt:f_number, lensrt:focus_m,
 // lensrt:focal_length_mm, lensrt:sensor_mm, lensrt:exposure, lensrt:dispersion,
-// lensrt:coatings.
+// lensrt:coatings, lensrt:film.
 ImageMetadata cameraMetadata(const Camera& camera);
 
 }  // namespace lensrt

@@ -44,7 +44,7 @@ struct CompareArgs {
   std::uint64_t seed = 0;
   std::string cameraNode;
   int sceneIndex = -1;
-  std::string environment;
+  EnvironmentArgs environment;
   int tileSize = 16;
   bool quiet = false;
   CameraOptions camera;
@@ -116,7 +116,7 @@ int runCompare(const CompareArgs& args, const CommandContext& context) {
   sceneOptions.sceneIndex = args.sceneIndex;
   sceneOptions.cameraNode = args.cameraNode;
   if (!args.resolution.empty()) sceneOptions.resolution = parseResolution(args.resolution);
-  if (!args.environment.empty()) sceneOptions.environment = parseEnvironment(args.environment);
+  sceneOptions.environment = environmentSpec(args.environment);
   sceneOptions.maxDepth = args.maxDepth;
   sceneOptions.quiet = args.quiet;
   RenderSettings settings;
@@ -149,6 +149,9 @@ int runCompare(const CompareArgs& args, const CommandContext& context) {
   for (const char* model : kModels) {
     CameraOptions options = matched;
     options.model = model;
+    // --film chooses the pinhole's film (radiance, the ideal reference, by
+    // default); the lens models always record irradiance.
+    if (options.model != "pinhole") options.film.clear();
     cameras.push_back(job.makeCamera(options, warnings));
   }
 
@@ -203,6 +206,7 @@ int runCompare(const CompareArgs& args, const CommandContext& context) {
         {"focus_m", info.focusMetres > 0 ? numberOrNull(info.focusMetres) : nlohmann::json(nullptr)},
         {"focus_at_infinity", std::isinf(info.focusMetres)},
         {"focal_length_mm", info.focalLengthMm},
+        {"film", info.film},
         {"render_seconds", results[i].seconds},
         {"camera_ray_efficiency", results[i].output.cameraRayEfficiency()},
         {"nan_samples", results[i].output.droppedSamples},
@@ -240,13 +244,14 @@ int runCompare(const CompareArgs& args, const CommandContext& context) {
         {"focus_m", numberOrNull(lensInfo.focusMetres)},
         {"sensor", args.camera.sensor},
         {"exposure", lensInfo.exposure},
+        {"pinhole_film", cameras[0]->info().film},
         {"blades", args.camera.blades},
         {"width", job.width()},
         {"height", job.height()},
         {"spp", args.spp},
         {"seed", args.seed},
         {"max_depth", args.maxDepth},
-        {"environment", args.environment.empty() ? "none" : args.environment}}},
+        {"environment", job.environmentDescription()}}},
       {"lens", lens},
       {"heatmap_scale", heatmap.scaleMax},
       {"vignetting_bins", kVignettingBins},
@@ -292,10 +297,7 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("--camera-node", args->cameraNode, "camera to render: a glTF node name or index");
   cmd->add_option("--scene-index", args->sceneIndex, "which glTF scene to render (0-based)")
       ->check(CLI::Range(-1, 1 << 20));
-  cmd->add_option("--env", args->environment,
-                  "environment light: constant:V, constant:R,G,B or a lat-long .exr/.hdr map, e.g. --env "
-                  "constant:1 (default: black)")
-      ->check([](const std::string& s) { return checkEnvironment(s); });
+  addEnvironmentOptions(*cmd, args->environment);
   cmd->add_option("--tile-size", args->tileSize,
                   "tile size in pixels for scheduling (does not change the images)")
       ->check(CLI::Range(1, 4096))
@@ -304,6 +306,10 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   // compare renders every model; the lens they are derived from is required.
   cmd->remove_option(cmd->get_option("--camera"));
   cmd->get_option("--lens")->required();
+  cmd->get_option("--film")->description(
+      "the pinhole's film: radiance (the ideal reference, as pbrt, Cycles and Mitsuba record it; default) or "
+      "irradiance (all four models on the physical film, cos^4 and bellows factor included, scaled by "
+      "--exposure); thin, thick and lens always record irradiance");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress, warnings or summary on stderr (errors still print)");
   return [args, context]() { return runCompare(*args, context); };
 }

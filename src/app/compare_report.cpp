@@ -186,6 +186,13 @@ std::string compareReportHtml(const nlohmann::json& report) {
                         escapeHtml(names[i]));
   html +=
       "), no tone mapping.</p>\n<img src=\"contact-sheet.png\" alt=\"contact sheet of the four models\">\n";
+  html +=
+      settings.value("pinhole_film", std::string()) == "radiance"
+          ? "<p>Film: the pinhole records radiance (the ideal reference: the mean radiance along its rays, "
+            "no cos<sup>4</sup> fall-off, no bellows factor); thin, thick and lens record film irradiance "
+            "scaled by the exposure.</p>\n"
+          : "<p>Film: all four models record film irradiance scaled by the exposure (the pinhole as an "
+            "ideal lens shrunk to a point: cos<sup>4</sup> fall-off included).</p>\n";
 
   html +=
       "<h2>Figures</h2>\n<table>\n<tr><th>model</th><th>camera</th><th>render s</th><th>camera-ray "

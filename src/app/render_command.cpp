@@ -38,7 +38,7 @@ struct RenderArgs {
   std::uint64_t seed = 0;
   std::string cameraNode;
   int sceneIndex = -1;
-  std::string environment;
+  EnvironmentArgs environment;
   std::vector<std::string> aovs;
   int tileSize = 16;
   std::string crop;
@@ -121,7 +121,7 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   sceneOptions.sceneIndex = args.sceneIndex;
   sceneOptions.cameraNode = args.cameraNode;
   if (!args.resolution.empty()) sceneOptions.resolution = parseResolution(args.resolution);
-  if (!args.environment.empty()) sceneOptions.environment = parseEnvironment(args.environment);
+  sceneOptions.environment = environmentSpec(args.environment);
   sceneOptions.maxDepth = args.maxDepth;
   sceneOptions.quiet = args.quiet;
   RenderSettings settings;
@@ -291,11 +291,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
          "--scene-index", args->sceneIndex,
          "which glTF scene to render (0-based; default: the file's default scene), e.g. --scene-index 1")
       ->check(integerIn(0, 1 << 20, "0-based"));
-  cmd->add_option(
-         "--env", args->environment,
-         "environment light: constant:V or constant:R,G,B radiance in W/(sr m^2), or a lat-long .exr/.hdr "
-         "map (centre = -Z, +Y up), e.g. --env constant:1 (default: black)")
-      ->check([](const std::string& s) { return checkEnvironment(s); });
+  addEnvironmentOptions(*cmd, args->environment);
   cmd->add_option(
          "--aov", args->aovs,
          "extra EXR channels, comma separated: depth (depth.Z, metres), normal (normal.X/Y/Z, world), "

@@ -35,14 +35,24 @@ auto asFlagError(const char* flag, F&& f) {
 }  // namespace
 
 Environment makeEnvironment(const EnvironmentSpec& spec) {
-  if (spec.constant) return Environment::constant(*spec.constant);
+  const auto adjusted = [&](const Environment& e) {
+    const Environment scaled = spec.intensity == 1 ? e : e.scaled(float(spec.intensity));
+    return spec.rotationDegrees == 0 ? scaled : scaled.rotatedAboutY(float(spec.rotationDegrees));
+  };
+  if (spec.constant) return adjusted(Environment::constant(*spec.constant));
   if (spec.file.empty()) return Environment();
   const Image map = readImage(spec.file);
   try {
-    return Environment::latLong(map);
+    return adjusted(Environment::latLong(map));
   } catch (const std::invalid_argument& e) {
     throw InputError(spec.file, e.what());
   }
+}
+
+Environment defaultEnvironment(const EnvironmentSpec& spec) {
+  EnvironmentSpec sky = spec;
+  sky.constant = Rgb{kDefaultSkyRadiance, kDefaultSkyRadiance, kDefaultSkyRadiance};
+  return makeEnvironment(sky);
 }
 
 RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_(options) {
@@ -71,6 +81,20 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
   scene_ = std::make_unique<RenderScene>(std::move(desc));
   materials_ = std::make_unique<MaterialTable>(scene_->desc());
   lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+  // Most glTF files leave the lighting to the viewer, which shows them under
+  // a default environment; so does lensrt, rather than render black.
+  const bool environmentGiven = options.environment.constant || !options.environment.file.empty();
+  if (lights_->empty() && !environmentGiven) {
+    *environment_ = defaultEnvironment(options.environment);
+    lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+    defaultEnvironment_ = true;
+    if (!lights_->empty() && !options.quiet)
+      warnings.warn(
+          fmt::format("the scene has no light source: lighting it with the default environment, a uniform "
+                      "sky of radiance "
+                      "{:g} (--env chooses another)",
+                      kDefaultSkyRadiance * options.environment.intensity));
+  }
   if (lights_->empty() && !options.quiet)
     warnings.warn(
         "the scene has no lights, emissive surfaces or environment: the image will be black "
@@ -82,6 +106,10 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
 }
 
 RenderJob::~RenderJob() = default;
+
+std::string RenderJob::environmentDescription() const {
+  return (defaultEnvironment_ ? "default " : "") + environment_->describe();
+}
 
 std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warnings& warnings) const {
   const HitDistance hitDistance = [this](const Ray& ray) -> std::optional<double> {
@@ -150,7 +178,7 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& se
       {"lensrt:camera_samples", std::to_string(out.cameraSamples)},
       {"lensrt:blocked_camera_rays", std::to_string(out.blockedCameraRays)},
       {"lensrt:max_depth", std::to_string(options_.maxDepth)},
-      {"lensrt:environment", environment_->describe()},
+      {"lensrt:environment", environmentDescription()},
       {"lensrt:render_seconds", fmt::format("{:.3f}", result.seconds)},
       {"lensrt:version", LENSRT_VERSION},
       {"lensrt:command_line", commandLine},

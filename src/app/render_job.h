@@ -67,6 +67,11 @@ class RenderJob {
   ImageMetadata identity(const Camera& camera, const RenderSettings& settings) const;
 
   // The EXR header of a render: its identity, region, timing, efficiency.
+  // "constant 1,1,1", "latlong 512x256 rotated 90deg", ... prefixed with
+  // "default " when the scene had no light and no --env (lensrt:environment).
+  std::string environmentDescription() const;
+
+  // The EXR header of a render: camera, settings, timing, efficiency.
   ImageMetadata metadata(const Camera& camera, const RenderSettings& settings, const RenderJobResult& result,
                          const std::string& commandLine) const;
 
@@ -76,13 +81,20 @@ class RenderJob {
   int width_ = 0, height_ = 0;
   CameraDesc gltfCamera_;
   std::unique_ptr<Environment> environment_;
+  bool defaultEnvironment_ = false;
   std::unique_ptr<RenderScene> scene_;
   std::unique_ptr<MaterialTable> materials_;
   std::unique_ptr<LightSet> lights_;
   std::unique_ptr<Integrator> integrator_;
 };
 
-// The environment a spec describes; reads the map file. Throws InputError.
+// The radiance of the default environment, W/(sr m^2) in every direction: a
+// scene with no light source (no punctual light, no emissive surface) and no
+// --env is lit by it, times --env-intensity.
+inline constexpr float kDefaultSkyRadiance = 1.0f;
+
+// The environment a spec describes (black when it names none); reads the map
+// file. Throws InputError.
 Environment makeEnvironment(const EnvironmentSpec& spec);
 
 }  // namespace lensrt

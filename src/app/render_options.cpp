@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "app/option_checks.h"
+
 namespace lensrt {
 namespace {
 
@@ -95,6 +97,31 @@ EnvironmentSpec parseEnvironment(const std::string& text) {
     throw CLI::ValidationError(
         "--env: expected constant:V, constant:R,G,B or a lat-long .exr/.hdr file, got '" + text + "'");
   spec.file = text;
+  return spec;
+}
+
+void addEnvironmentOptions(CLI::App& cmd, EnvironmentArgs& args) {
+  cmd.add_option(
+         "--env", args.environment,
+         "environment light: constant:V or constant:R,G,B radiance in W/(sr m^2), or a lat-long "
+         ".exr/.hdr map (centre = -Z, +Y up), e.g. --env constant:1 (default: none when the scene has "
+         "a light or an emissive surface, else a uniform sky of radiance 1, with a notice)")
+      ->check([](const std::string& s) { return checkEnvironment(s); });
+  cmd.add_option("--env-rotate", args.rotationDegrees,
+                 "turn the environment about +Y by DEG degrees, counterclockwise seen from above (right-hand "
+                 "rule): at 90 the map's centre moves from -Z to -X; e.g. --env-rotate 90 (default 0)")
+      ->check(numberIn(-360.0, 360.0, "degrees"));
+  cmd.add_option("--env-intensity", args.intensity,
+                 "multiply the environment's radiance by K (constant, map or the default sky), e.g. "
+                 "--env-intensity 0.5 (default 1)")
+      ->check(numberIn(0.0, 1e9, "a radiance scale"));
+}
+
+EnvironmentSpec environmentSpec(const EnvironmentArgs& args) {
+  EnvironmentSpec spec;
+  if (!args.environment.empty()) spec = parseEnvironment(args.environment);
+  spec.rotationDegrees = args.rotationDegrees;
+  spec.intensity = args.intensity;
   return spec;
 }
 

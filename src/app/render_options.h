@@ -1,7 +1,9 @@
 // Parsing of `lensrt render`'s option values that are more than a number:
-// --res, --env and --aov. Bad syntax throws CLI::ValidationError (exit 2).
+// --res, --env (with --env-rotate, --env-intensity) and --aov. Bad syntax throws CLI::ValidationError (exit
+// 2).
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,11 +21,24 @@ struct Resolution {
 // "WxH" (e.g. 640x360) or "W" (height from the camera's aspect ratio).
 Resolution parseResolution(const std::string& text);
 
+// --env (neither constant nor file: the default, see RenderJob), --env-rotate
+// and --env-intensity.
 struct EnvironmentSpec {
   std::optional<Rgb> constant;  // constant:V or constant:R,G,B
   std::string file;             // a lat-long .exr or .hdr
+  double rotationDegrees = 0;   // about +Y, right-hand rule: +90 puts the map's centre at -X
+  double intensity = 1;         // multiplies the radiance
 };
 EnvironmentSpec parseEnvironment(const std::string& text);
+
+// The three environment flags of `lensrt render` and `lensrt compare`.
+struct EnvironmentArgs {
+  std::string environment;  // --env; empty: the default
+  double rotationDegrees = 0;
+  double intensity = 1;
+};
+void addEnvironmentOptions(CLI::App& command, EnvironmentArgs& args);
+EnvironmentSpec environmentSpec(const EnvironmentArgs& args);
 
 AovSelection parseAovs(const std::vector<std::string>& names);
 

@@ -56,6 +56,10 @@ struct CameraInfo {
   std::string exposure;       // e.g. "normalized" or "physical 0.01s ISO100"
   bool dispersion = false;    // each sample traced at its own wavelength (tracesWavelengths)
   std::string coatings = {};  // the full lens's Fresnel model: "none", "single", "multi"; empty: lossless
+  // What a pixel records: "irradiance" (the physical film: cos^4, bellows
+  // factor, exposure scale) or "radiance" (the mean radiance along the camera
+  // rays: only the ideal pinhole offers it, as pbrt, Cycles and Mitsuba do).
+  std::string film = "irradiance";
 };
 
 // A focus distance for describe(): "2m", "infinity".

@@ -2,28 +2,35 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "core/constants.h"
 
 namespace lensrt {
 
-PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians)
-    : Camera(worldFromCamera, film), yfov_(yfovRadians), tanHalfY_(std::tan(yfovRadians / 2)) {
+PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
+                             std::string lensName)
+    : Camera(worldFromCamera, film),
+      yfov_(yfovRadians),
+      tanHalfY_(std::tan(yfovRadians / 2)),
+      lensName_(std::move(lensName)) {
   if (!(yfovRadians > 0 && yfovRadians < kPi))
     throw std::invalid_argument("pinhole field of view must be between 0 and 180 degrees");
 }
 
 PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
                              const Exposure& exposure, double fNumber, std::string lensName)
-    : PinholeCamera(worldFromCamera, film, yfovRadians) {
+    : PinholeCamera(worldFromCamera, film, yfovRadians, std::move(lensName)) {
   onAxisWeight_ = exposureScale(exposure, fNumber) * idealIrradianceRatio(fNumber);
   exposure_ = exposure;
   fNumber_ = fNumber;
-  lensName_ = std::move(lensName);
 }
 
 std::string PinholeCamera::describe() const {
-  return "pinhole yfov=" + std::to_string(yfov_ * 180.0 / kPi) + "deg";
+  // The film is part of the description (the merge/resume identity): parts
+  // recorded in radiance and in irradiance must not be joined.
+  return "pinhole yfov=" + std::to_string(yfov_ * 180.0 / kPi) +
+         "deg film=" + (onAxisWeight_ ? "irradiance" : "radiance");
 }
 
 CameraInfo PinholeCamera::info() const {
@@ -31,7 +38,8 @@ CameraInfo PinholeCamera::info() const {
   i.model = "pinhole";
   i.lens = lensName_;
   i.focalLengthMm = 0.5 * film().sensorHeightMm / tanHalfY_;
-  i.exposure = onAxisWeight_ ? lensrt::describe(exposure_) : "radiance";
+  i.exposure = onAxisWeight_ ? lensrt::describe(exposure_) : "none";
+  i.film = onAxisWeight_ ? "irradiance" : "radiance";
   return i;
 }
 

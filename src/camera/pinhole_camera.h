@@ -9,15 +9,18 @@ namespace lensrt {
 
 // Ideal perspective projection through a point at the camera origin.
 //
-// Two radiometries: the plain constructor records radiance (weight 1, for
-// tests and previews); given an exposure, the pinhole records the irradiance
-// of an ideal f/N lens shrunk to a point, pi cos^4(theta) / (4 N^2) times the
-// exposure scale (so cos^4(theta) when normalized), like the other models.
+// Two films: the constructor without an exposure records radiance (weight 1:
+// the mean radiance along the rays through each pixel, the convention of
+// pbrt's perspective camera, Cycles and Mitsuba; `lensrt render`'s default);
+// given an exposure, the pinhole records the irradiance of an ideal f/N lens
+// shrunk to a point, pi cos^4(theta) / (4 N^2) times the exposure scale (so
+// cos^4(theta) when normalized), like the other models.
 class PinholeCamera final : public Camera {
  public:
   // yfovRadians spans the film height; the horizontal field follows from the
   // film's aspect ratio (pixels are square on the sensor).
-  PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians);
+  PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
+                std::string lensName = {});
   // fNumber only sets the physical exposure (a pinhole has no aperture to speak of).
   PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
                 const Exposure& exposure, double fNumber, std::string lensName = {});

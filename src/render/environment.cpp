@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "core/constants.h"
@@ -56,6 +57,47 @@ Environment Environment::latLong(const Image& image) {
   return e;
 }
 
+Environment Environment::scaled(float k) const {
+  if (!(k >= 0) || !std::isfinite(k))
+    throw std::invalid_argument("environment intensity must be finite and >= 0");
+  Environment e = *this;
+  e.constant_ = constant_ * k;
+  for (Rgb& t : e.texels_) t = t * k;
+  e.averageLuminance_ = averageLuminance_ * k;
+  // The sampling density is normalised, so it does not change with k.
+  if (!(k > 0)) {
+    e.black_ = true;
+    e.texels_.clear();
+    e.distribution_ = Distribution2D();
+  }
+  char buf[48];
+  std::snprintf(buf, sizeof buf, " intensity %g", double(k));
+  e.description_ += buf;
+  return e;
+}
+
+Environment Environment::rotatedAboutY(float degrees) const {
+  if (!std::isfinite(degrees)) throw std::invalid_argument("environment rotation must be finite");
+  Environment e = *this;
+  const double a = double(degrees) * kPi / 180.0;
+  // Compose with any earlier rotation (angles about one axis add).
+  const double c = std::cos(a), s = std::sin(a);
+  e.cosRotation_ = float(c * cosRotation_ - s * sinRotation_);
+  e.sinRotation_ = float(s * cosRotation_ + c * sinRotation_);
+  char buf[48];
+  std::snprintf(buf, sizeof buf, " rotated %gdeg", double(degrees));
+  e.description_ += buf;
+  return e;
+}
+
+// R_y(a) by the right-hand rule: x' = x cos a + z sin a, z' = -x sin a + z cos a.
+Vec3f Environment::fromMap(const Vec3f& m) const {
+  return {cosRotation_ * m.x + sinRotation_ * m.z, m.y, -sinRotation_ * m.x + cosRotation_ * m.z};
+}
+Vec3f Environment::toMap(const Vec3f& w) const {
+  return {cosRotation_ * w.x - sinRotation_ * w.z, w.y, sinRotation_ * w.x + cosRotation_ * w.z};
+}
+
 Vec2f Environment::directionToUv(const Vec3f& d) {
   const float u = 0.5f + std::atan2(d.x, -d.z) / (2 * kPiF);
   const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPiF;
@@ -71,7 +113,7 @@ Vec3f Environment::uvToDirection(const Vec2f& uv) {
 Rgb Environment::eval(const Vec3f& direction) const {
   if (black_) return {0, 0, 0};
   if (texels_.empty()) return constant_;
-  const Vec2f uv = directionToUv(direction);
+  const Vec2f uv = directionToUv(toMap(direction));
   const int x = std::min(int(uv.x * float(width_)), width_ - 1);
   const int y = std::min(int(uv.y * float(height_)), height_ - 1);
   return texels_[std::size_t(y) * width_ + x];
@@ -84,7 +126,7 @@ std::optional<EnvironmentSample> Environment::sample(const Vec2f& u) const {
     const float z = 1 - 2 * u.x, r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = 2 * kPiF * u.y;
     return EnvironmentSample{{r * std::cos(phi), r * std::sin(phi), z}, constant_, 1 / (4 * kPiF)};
   }
-  const Vec3f d = uvToDirection(distribution_.sample(u, nullptr));
+  const Vec3f d = fromMap(uvToDirection(distribution_.sample(u, nullptr)));
   // Density and radiance from the direction itself, so that a sample on a texel
   // edge reports the same texel that eval() and pdf() will see for it.
   const float density = pdf(d);
@@ -95,9 +137,12 @@ std::optional<EnvironmentSample> Environment::sample(const Vec2f& u) const {
 float Environment::pdf(const Vec3f& direction) const {
   if (black_) return 0;
   if (texels_.empty()) return 1 / (4 * kPiF);
-  const Vec2f uv = directionToUv(direction);
-  const float sinTheta = std::sin(kPiF * uv.y);
-  if (sinTheta <= 0) return 0;
+  const Vec3f d = toMap(direction);
+  const Vec2f uv = directionToUv(d);
+  // sin(theta) from the direction itself: sin(acos(y)) is 0 in float within
+  // about 3e-4 rad of a pole, which would reject valid samples there.
+  const float sinTheta = std::hypot(d.x, d.z) / length(d);
+  if (!(sinTheta > 0)) return 0;
   return distribution_.pdf(uv) / (2 * kPiF * kPiF * sinTheta);
 }
 

@@ -5,6 +5,13 @@
 // row v in [0,1) the polar angle from +Y (row 0 = straight up). The image
 // centre (u, v) = (0.5, 0.5) looks down -Z, glTF's default forward; u grows
 // toward +X (so u = 0.75 is +X). The map is piecewise constant per texel.
+//
+// Importance sampling: a texel is picked with probability proportional to its
+// luminance times sin(theta) (the solid angle of its row), a point uniformly
+// in it, and the density per solid angle is p(u, v) / (2 pi^2 sin(theta)).
+//
+// Rotation about +Y by the right-hand rule (counterclockwise seen from above):
+// at +90 degrees what the unrotated map shows at -Z (its centre) appears at -X.
 #pragma once
 
 #include <optional>
@@ -31,6 +38,11 @@ class Environment {
   // std::invalid_argument when the image has no usable channels.
   static Environment latLong(const Image& image);
 
+  // The same light times k >= 0 (--env-intensity).
+  Environment scaled(float k) const;
+  // The same light turned by `degrees` about +Y (--env-rotate; the sign as above).
+  Environment rotatedAboutY(float degrees) const;
+
   bool isBlack() const { return black_; }
   Rgb eval(const Vec3f& direction) const;
   std::optional<EnvironmentSample> sample(const Vec2f& u) const;
@@ -43,12 +55,17 @@ class Environment {
   static Vec3f uvToDirection(const Vec2f& uv);
 
  private:
+  // World direction to the unrotated map's frame, and back.
+  Vec3f toMap(const Vec3f& world) const;
+  Vec3f fromMap(const Vec3f& map) const;
+
   bool black_ = true;
   Rgb constant_{0, 0, 0};
   int width_ = 0, height_ = 0;
   std::vector<Rgb> texels_;
   Distribution2D distribution_;
   float averageLuminance_ = 0;
+  float cosRotation_ = 1, sinRotation_ = 0;
   std::string description_ = "black";
 };
 

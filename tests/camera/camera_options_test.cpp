@@ -136,5 +136,48 @@ TEST(CameraOptions, UsageErrorsNameTheFlag) {
   expectFlag(pixel, "--focus-pixel");
 }
 
+// --film: the pinhole records radiance by default (weight 1 at every pixel:
+// no cos^4), irradiance on request (cos^4 of the field angle, normalized
+// exposure); the lens models refuse radiance.
+TEST(CameraOptions, FilmIsRadianceForThePinholeAndIrradianceOnRequest) {
+  Warnings w;
+  CameraDesc gltf;
+  gltf.yfov = float(60 * kPi / 180);
+  CameraSample corner;
+  corner.film = {0.0f, 0.0f};  // the top-left corner of a square image
+  const double tanHalf = std::tan(30 * kPi / 180);
+  const double cos2 = 1.0 / (1.0 + 2 * tanHalf * tanHalf);
+
+  const auto radiance = makeCamera(CameraOptions{}, gltf, raster(32, 32), {}, w);
+  EXPECT_EQ(radiance->info().film, "radiance");
+  EXPECT_EQ(cameraMetadata(*radiance).at("lensrt:film"), "radiance");
+  EXPECT_EQ(radiance->generateRay(corner)->weight, 1.0f);
+
+  CameraOptions irr;
+  irr.film = "irradiance";
+  const auto irradiance = makeCamera(irr, gltf, raster(32, 32), {}, w);
+  EXPECT_EQ(cameraMetadata(*irradiance).at("lensrt:film"), "irradiance");
+  EXPECT_NEAR(irradiance->generateRay(corner)->weight, cos2 * cos2, 1e-6);
+
+  // Thin, thick and lens record irradiance, and say so.
+  for (const char* model : {"thin", "thick", "lens"}) {
+    EXPECT_EQ(makeCamera(withLens(model), gltf, raster(32, 32), {}, w)->info().film, "irradiance") << model;
+    CameraOptions o = withLens(model);
+    o.film = "radiance";
+    try {
+      makeCamera(o, gltf, raster(32, 32), {}, w);
+      ADD_FAILURE() << model << " accepted --film radiance";
+    } catch (const CLI::ValidationError& e) {
+      EXPECT_NE(std::string(e.what()).find("--film"), std::string::npos) << e.what();
+    }
+  }
+  // Physical exposure is a film irradiance: with the radiance film it is refused.
+  CameraOptions physical;
+  physical.exposure = "physical";
+  EXPECT_THROW(makeCamera(physical, gltf, raster(32, 32), {}, w), CLI::ValidationError);
+  physical.film = "irradiance";
+  EXPECT_NO_THROW(makeCamera(physical, gltf, raster(32, 32), {}, w));
+}
+
 }  // namespace
 }  // namespace lensrt

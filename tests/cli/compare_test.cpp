@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_util.h"
+#include "image/image_io.h"
 
 namespace lensrt {
 namespace {
@@ -91,6 +92,37 @@ TEST(CompareCli, FstopWiderThanTheLensMatchesEveryModelToItsWidest) {
   EXPECT_NEAR(wideOpen, 2.03, 0.005);
   for (const char* model : {"thin", "thick", "lens"})
     EXPECT_DOUBLE_EQ(report.at("models").at(model).at("f_number").get<double>(), wideOpen) << model;
+}
+
+// The pinhole is the ideal reference on radiance film by default; --film
+// irradiance puts it on the physical film beside the others. The report, the
+// HTML page and every EXR say which.
+TEST(CompareCli, ThePinholeRecordsRadianceUnlessAskedForIrradiance) {
+  const TempDir tmp;
+  for (const std::string film : {"", "irradiance"}) {
+    SCOPED_TRACE(film);
+    std::vector<std::string> args = compareArgs(tmp / ("cmp" + film));
+    *std::find(args.begin(), args.end(), "64x36") = "16x9";
+    if (!film.empty()) args.insert(args.end(), {"--film", film});
+    const RunResult r = runLensrt(args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::filesystem::path dir = tmp / ("cmp" + film);
+    const nlohmann::json report = nlohmann::json::parse(cli::readFile(dir / "report.json"));
+    const std::string pinholeFilm = film.empty() ? "radiance" : "irradiance";
+    EXPECT_EQ(report.at("settings").at("pinhole_film"), pinholeFilm);
+    EXPECT_EQ(report.at("models").at("pinhole").at("film"), pinholeFilm);
+    for (const char* model : {"thin", "thick", "lens"})
+      EXPECT_EQ(report.at("models").at(model).at("film"), "irradiance") << model;
+    ImageMetadata meta;
+    readImage(dir / "pinhole.exr", &meta);
+    EXPECT_EQ(meta["lensrt:film"], pinholeFilm);
+    readImage(dir / "thin.exr", &meta);
+    EXPECT_EQ(meta["lensrt:film"], "irradiance");
+    const std::string html = cli::readFile(dir / "report.html");
+    EXPECT_NE(
+        html.find(film.empty() ? "the pinhole records radiance" : "all four models record film irradiance"),
+        std::string::npos);
+  }
 }
 
 TEST(CompareCli, MissingLensIsAUsageError) {

@@ -122,5 +122,17 @@ TEST_F(GoldenSensitivity, ChangedFocalLengthOfThePinholeFails) {
   expectFailure(changed);
 }
 
+// The pinhole references record radiance (the default film): the same render
+// on the irradiance film (cos^4 of the field angle, 0.64 in the corners of the
+// Cornell camera's 39 degree field) must not pass for it.
+TEST_F(GoldenSensitivity, IrradianceFilmOnARadianceReferenceFails) {
+  renderPassing("cornell-pinhole");
+  if (IsSkipped() || HasFatalFailure()) return;
+  const auto changed = dir_ / "irradiance.exr";
+  const RunResult r = renderCase(withOption(*c_, "--film", "irradiance"), kTestSeed, changed);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expectFailure(changed);
+}
+
 }  // namespace
 }  // namespace lensrt::golden
