@@ -22,7 +22,8 @@ DEPARTURES = [
     "metal: GGX tinted by the base colour (no Schlick rise toward grazing angles)",
     "diffuse under the specular layer: 1 - F(n.v) instead of lensrt's 1 - albedo",
     "transmission: a Glass BSDF mixed in by the transmission factor",
-    "clearcoat, sheen and KHR_materials_specular are left out of the Cycles graph",
+    "KHR_materials_specular: its specularFactor scales the Fresnel weight; textures and "
+    "specularColorFactor are left out, as are clearcoat and sheen",
 ]
 
 
@@ -40,6 +41,23 @@ def import_scene(path):
     bpy.ops.import_scene.gltf(filepath=path)
 
 
+def specular_factors(path):
+    """{material name: KHR_materials_specular specularFactor} from the glTF's JSON
+    (Blender 3.4's importer does not carry the factor into its graph)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:4] == b"glTF":  # GLB: the JSON chunk follows the 12-byte header
+        length = int.from_bytes(data[12:16], "little")
+        data = data[20:20 + length]
+    doc = json.loads(data)
+    factors = {}
+    for i, m in enumerate(doc.get("materials", [])):
+        ext = m.get("extensions", {}).get("KHR_materials_specular")
+        if ext is not None:
+            factors[m.get("name", f"material_{i}")] = float(ext.get("specularFactor", 1.0))
+    return factors
+
+
 def linked_or_value(tree, socket, target):
     """Feeds `target` from what fed the Principled socket: its link, else its value."""
     if socket.is_linked:
@@ -48,7 +66,7 @@ def linked_or_value(tree, socket, target):
         target.default_value = socket.default_value
 
 
-def rebuild_material(mat):
+def rebuild_material(mat, specular_factor=1.0):
     """Replaces the importer's Principled BSDF by the glTF appendix B graph:
     mix(metallic, fresnel_mix(1.5, diffuse, ggx), ggx tinted by base colour),
     plus emission, alpha and transmission, reusing the importer's texture nodes."""
@@ -94,7 +112,13 @@ def rebuild_material(mat):
         base = mix.outputs["Shader"]
 
     dielectric = node("ShaderNodeMixShader")
-    links.new(fresnel.outputs["Fac"], dielectric.inputs["Fac"])
+    if specular_factor != 1.0:
+        weight = node("ShaderNodeMath", operation="MULTIPLY")
+        links.new(fresnel.outputs["Fac"], weight.inputs[0])
+        weight.inputs[1].default_value = specular_factor
+        links.new(weight.outputs["Value"], dielectric.inputs["Fac"])
+    else:
+        links.new(fresnel.outputs["Fac"], dielectric.inputs["Fac"])
     links.new(base, dielectric.inputs[1])
     links.new(specular.outputs["BSDF"], dielectric.inputs[2])
     surface = node("ShaderNodeMixShader")
@@ -234,7 +258,8 @@ def main():
     j = job()
     if j["mode"] == "render":
         import_scene(j["scene"])
-        rebuilt = sum(rebuild_material(m) for m in bpy.data.materials if m.use_nodes)
+        factors = specular_factors(j["scene"])
+        rebuilt = sum(rebuild_material(m, factors.get(m.name, 1.0)) for m in bpy.data.materials if m.use_nodes)
         place_camera(j)
         configure(j)
         bpy.context.scene.render.filepath = j["cycles_exr"]
