@@ -38,4 +38,11 @@ std::vector<std::string> lines(const std::string& text);
 std::string triangleGltf(const float (&positions)[9], const unsigned short (&indices)[3],
                          int bufferBytes = 44);
 
+// A camera (yfov 0.7 rad) at the origin and nothing else: under a constant
+// sky, a flat field.
+inline constexpr const char* kSkyOnlyGltf =
+    R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+    R"("cameras":[{"type":"perspective","perspective":{"yfov":0.7,"znear":0.1}}],)"
+    R"("nodes":[{"name":"flat field","camera":0}]})";
+
 }  // namespace lensrt::cli

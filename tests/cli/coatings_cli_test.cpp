@@ -15,10 +15,7 @@ using cli::runLensrt;
 using cli::RunResult;
 using cli::TempDir;
 
-// A camera at the origin and nothing else: the constant sky is a flat field.
-const char* const kSkyOnly = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
-                             R"("cameras":[{"type":"perspective","perspective":{"yfov":0.7,"znear":0.1}}],)"
-                             R"("nodes":[{"name":"flat field","camera":0}]})";
+using cli::kSkyOnlyGltf;
 
 std::vector<std::string> renderArgs(const TempDir& dir, const std::string& name,
                                     std::vector<std::string> extra, int spp = 16) {
@@ -57,7 +54,7 @@ double centreG(const Image& img) {
 
 TEST(Coatings, FlatFieldDimsByTheAxialTransmittanceAndIsPartOfTheIdentity) {
   const TempDir dir;
-  cli::writeFile(dir / "sky.gltf", kSkyOnly);
+  cli::writeFile(dir / "sky.gltf", kSkyOnlyGltf);
   RunResult r = runLensrt(renderArgs(dir, "lossless.exr", {}));
   ASSERT_EQ(r.status, 0) << r.err;
   r = runLensrt(renderArgs(dir, "none.exr", {"--coatings", "none", "--checkpoint", "1000"}));

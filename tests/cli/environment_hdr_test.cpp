@@ -12,13 +12,11 @@ using cli::runLensrt;
 using cli::RunResult;
 using cli::TempDir;
 
-const char* const kSkyOnly = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
-                             R"("cameras":[{"type":"perspective","perspective":{"yfov":0.7,"znear":0.1}}],)"
-                             R"("nodes":[{"name":"flat field","camera":0}]})";
+using cli::kSkyOnlyGltf;
 
 TEST(EnvironmentHdr, LatLongRgbeMapIsReadWithYUp) {
   const TempDir dir;
-  cli::writeFile(dir / "sky.gltf", kSkyOnly);
+  cli::writeFile(dir / "sky.gltf", kSkyOnlyGltf);
   // A 16x8 flat (not run-length encoded) RGBE file: upper hemisphere (top
   // rows) radiance 3 = 0.75 * 2^2, lower 1 = 0.5 * 2^1, both exact.
   std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8 +X 16\n";
@@ -43,7 +41,7 @@ TEST(EnvironmentHdr, LatLongRgbeMapIsReadWithYUp) {
 
 TEST(EnvironmentHdr, TruncatedMapIsOneErrorLine) {
   const TempDir dir;
-  cli::writeFile(dir / "sky.gltf", kSkyOnly);
+  cli::writeFile(dir / "sky.gltf", kSkyOnlyGltf);
   cli::writeFile(dir / "cut.hdr", "#?RADIANCE\n");
   const RunResult r = runLensrt({"render", (dir / "sky.gltf").string(), "--env", (dir / "cut.hdr").string(),
                                  "-q", "-o", (dir / "out.exr").string()});

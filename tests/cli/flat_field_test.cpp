@@ -15,10 +15,7 @@ using cli::runLensrt;
 using cli::RunResult;
 using cli::TempDir;
 
-// A camera (yfov 0.7 rad) at the origin and nothing else.
-const char* const kSkyOnly = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
-                             R"("cameras":[{"type":"perspective","perspective":{"yfov":0.7,"znear":0.1}}],)"
-                             R"("nodes":[{"name":"flat field","camera":0}]})";
+using cli::kSkyOnlyGltf;
 
 Image render(const TempDir& dir, const std::vector<std::string>& extra, const std::string& name) {
   std::vector<std::string> args = {
@@ -52,7 +49,7 @@ double centre(const Image& img) {
 
 TEST(FlatField, PinholeSeesTheSkyAsItsFilmPrescribes) {
   const TempDir dir;
-  cli::writeFile(dir / "sky.gltf", kSkyOnly);
+  cli::writeFile(dir / "sky.gltf", kSkyOnlyGltf);
   // With radiance film (once it exists) the pinhole records the sky's radiance
   // everywhere; physical (irradiance) film records L cos^4(theta).
   const bool radianceFilm = runLensrt({"render", "--help"}).out.find("--film") != std::string::npos;
@@ -73,7 +70,7 @@ TEST(FlatField, PinholeSeesTheSkyAsItsFilmPrescribes) {
 
 TEST(FlatField, LensVignettesWideOpenLessStoppedDown) {
   const TempDir dir;
-  cli::writeFile(dir / "sky.gltf", kSkyOnly);
+  cli::writeFile(dir / "sky.gltf", kSkyOnlyGltf);
   const Image open = render(dir, {"--camera", "lens", "--lens", "dgauss-50mm"}, "open.exr");
   const Image stopped = render(dir, {"--camera", "lens", "--lens", "dgauss-50mm", "--fstop", "8"}, "f8.exr");
   // Normalized exposure: the axis records the sky's radiance at any f-number.
