@@ -1,26 +1,30 @@
 #include "image/heatmap.h"
 
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include "image/oiio_module.h"
 #include "image/text.h"
 
 namespace lensrt {
 namespace {
 
+namespace OIIO = OIIO_NAMESPACE;
+
 constexpr Rgb kBackground{0.02f, 0.02f, 0.02f};
 constexpr Rgb kNonFinite{1.0f, 0.0f, 1.0f};
 
 // Viridis through OpenImageIO, whose maps are in linear values already.
-std::vector<float> viridis(const std::vector<float>& normalised, int width, int height) {
-  const oiio::Api* api = oiioModule();
-  if (!api) throw std::runtime_error("heatmap: " + oiioModuleError());
-  std::vector<float> rgb;
-  const std::string error = api->colorMap(normalised, width, height, "viridis", rgb);
-  if (!error.empty()) throw std::runtime_error("heatmap: " + error);
+std::vector<float> viridis(std::vector<float> normalised, int width, int height) {
+  // Wraps the vector's memory: the ImageBuf does not outlive this call.
+  OIIO::ImageBuf src(OIIO::ImageSpec(width, height, 1, OIIO::TypeDesc::FLOAT), normalised.data());
+  const OIIO::ImageBuf mapped = OIIO::ImageBufAlgo::color_map(src, 0, "viridis");
+  if (mapped.has_error()) throw std::runtime_error("heatmap: " + mapped.geterror());
+  std::vector<float> rgb(std::size_t(width) * height * 3);
+  mapped.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rgb.data());
   return rgb;
 }
 

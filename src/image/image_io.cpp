@@ -1,5 +1,6 @@
 #include "image/image_io.h"
 
+#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -13,13 +14,13 @@
 #include <vector>
 
 #include "core/error.h"
-#include "image/oiio_module.h"
 #include "image/srgb.h"
 
 namespace lensrt {
 namespace {
 
 namespace fs = std::filesystem;
+namespace OIIO = OIIO_NAMESPACE;
 
 enum class FileKind { Exr, Png, Jpeg, Unknown };
 
@@ -35,6 +36,13 @@ FileKind kindOf(const fs::path& file) {
   if (ext == ".png") return FileKind::Png;
   if (ext == ".jpg" || ext == ".jpeg") return FileKind::Jpeg;
   return FileKind::Unknown;
+}
+
+// OIIO error texts can span lines; InputError promises one.
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s.empty() ? "unknown OpenImageIO error" : s;
 }
 
 std::string errnoReason(int err) {
@@ -96,31 +104,35 @@ std::vector<int> previewChannels(const Image& image) {
   return {};
 }
 
-const oiio::Api& module(const fs::path& file) {
-  const oiio::Api* api = oiioModule();
-  if (!api) throw InputError(file.string(), oiioModuleError());
-  return *api;
-}
-
 void writeToTemporary(const fs::path& file, const fs::path& tmp, FileKind kind, const Image& image,
                       const ImageMetadata& metadata, const ImageWriteOptions& options) {
+  const char* format = kind == FileKind::Exr ? "openexr" : kind == FileKind::Png ? "png" : "jpeg";
+  auto out = OIIO::ImageOutput::create(format);
+  if (!out) throw InputError(file.string(), "OpenImageIO cannot write " + std::string(format) + " files");
+
   std::vector<float> previewPixels;
   const float* data = image.pixels.data();
-  oiio::Layout layout;
-  layout.width = image.width;
-  layout.height = image.height;
+  OIIO::ImageSpec spec;
   if (kind == FileKind::Exr) {
-    layout.channels = image.channels;
+    spec = OIIO::ImageSpec(image.width, image.height, int(image.channelCount()),
+                           options.halfFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+    spec.channelnames = image.channels;
+    spec.alpha_channel = image.channelIndex("A");
+    spec.attribute("compression", "zip");
     // A crop or tile: the data window inside the full frame's display window.
-    layout.x = image.originX;
-    layout.y = image.originY;
-    layout.fullWidth = image.fullWidth();
-    layout.fullHeight = image.fullHeight();
+    spec.x = image.originX;
+    spec.y = image.originY;
+    spec.full_x = 0;
+    spec.full_y = 0;
+    spec.full_width = image.fullWidth();
+    spec.full_height = image.fullHeight();
   } else {
     const std::vector<int> source = previewChannels(image);
     if (source.empty())
       throw InputError(file.string(), "a .png/.jpg preview needs R,G,B channels, a single channel or three");
-    layout.channels = {"R", "G", "B"};
+    spec = OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    if (kind == FileKind::Jpeg) spec.attribute("CompressionQuality", 95);
     // Encode here rather than letting OIIO quantise linear values, so the
     // preview is in sRGB whatever OIIO's colour defaults are.
     previewPixels.resize(std::size_t(image.width) * image.height * 3);
@@ -130,13 +142,15 @@ void writeToTemporary(const fs::path& file, const fs::path& tmp, FileKind kind, 
         previewPixels[i * 3 + c] = srgbEncode8(image.pixels[i * image.channelCount() + source[c]]) / 255.0f;
     data = previewPixels.data();
   }
-  const oiio::Format format = kind == FileKind::Exr   ? oiio::Format::Exr
-                              : kind == FileKind::Png ? oiio::Format::Png
-                                                      : oiio::Format::Jpeg;
-  const oiio::Attributes attributes(metadata.begin(), metadata.end());
-  const std::string error = module(file).write(tmp.string(), format, layout, options.halfFloat,
-                                               image.channelIndex("A"), attributes, data);
-  if (!error.empty()) throw InputError(file.string(), error);
+  for (const auto& [key, value] : metadata) spec.attribute(key, value);
+
+  if (!out->open(tmp.string(), spec))
+    throw InputError(file.string(), "cannot write: " + oneLine(out->geterror()));
+  const bool written = out->write_image(OIIO::TypeDesc::FLOAT, data);
+  const std::string writeError = written ? "" : out->geterror();
+  const bool closed = out->close();
+  if (!written || !closed)
+    throw InputError(file.string(), "cannot write: " + oneLine(written ? out->geterror() : writeError));
 }
 
 }  // namespace
@@ -174,30 +188,29 @@ Image readImage(const fs::path& file, ImageMetadata* metadata) {
   std::error_code ec;
   if (!fs::exists(file, ec)) throw InputError(file.string(), "no such file");
   if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
-  oiio::Layout layout;
-  std::vector<float> pixels;
-  oiio::Attributes attributes;
-  const std::string error =
-      module(file).read(file.string(), layout, pixels, metadata ? &attributes : nullptr);
-  if (!error.empty()) throw InputError(file.string(), error);
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw InputError(file.string(), "cannot read image: " + oneLine(OIIO::geterror()));
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.depth > 1) throw InputError(file.string(), "volume images are not supported");
 
-  Image image(layout.width, layout.height, layout.channels);
-  image.pixels = std::move(pixels);
+  Image image(spec.width, spec.height, spec.channelnames);
   // The data window relative to the display window's corner; a file whose
   // display window is the data window is a whole frame.
-  image.originX = layout.x - layout.fullX;
-  image.originY = layout.y - layout.fullY;
-  if (layout.fullWidth != layout.width || layout.fullHeight != layout.height || image.originX ||
-      image.originY) {
-    image.frameWidth = layout.fullWidth;
-    image.frameHeight = layout.fullHeight;
+  image.originX = spec.x - spec.full_x;
+  image.originY = spec.y - spec.full_y;
+  if (spec.full_width != spec.width || spec.full_height != spec.height || image.originX || image.originY) {
+    image.frameWidth = spec.full_width;
+    image.frameHeight = spec.full_height;
   }
   for (std::size_t c = 0; c < image.channels.size(); ++c)
     if (image.channels[c].empty()) image.channels[c] = "channel" + std::to_string(c);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    throw InputError(file.string(), "cannot read pixels: " + oneLine(in->geterror()));
   if (metadata) {
     metadata->clear();
-    for (auto& [key, value] : attributes) (*metadata)[key] = std::move(value);
+    for (const OIIO::ParamValue& p : spec.extra_attribs) (*metadata)[p.name().string()] = p.get_string();
   }
+  in->close();
   return image;
 }
 

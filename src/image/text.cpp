@@ -1,15 +1,16 @@
 #include "image/text.h"
 
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <algorithm>
 #include <cctype>
 #include <string_view>
 #include <utility>
-#include <vector>
-
-#include "image/oiio_module.h"
 
 namespace lensrt {
 namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
 
 constexpr const char* kFont = "DejaVuSansMono";
 
@@ -73,45 +74,40 @@ int drawBitmapText(Image& image, const int rgb[3], int x, int y, const std::stri
   return penX - x;
 }
 
-// The vector font's box of `text` (xbegin, xend, ybegin, yend); false
-// when OpenImageIO or the font is missing.
-bool vectorTextSize(const std::string& text, int size, int box[4]) {
-  const oiio::Api* api = oiioModule();
-  return api && api->textSize(text, size, kFont, box);
-}
-
 }  // namespace
 
 bool hasVectorFont() {
-  int box[4];
-  return vectorTextSize("0", 12, box);
+  return OIIO::ImageBufAlgo::text_size("0", 12, kFont).defined();
 }
 
 int textWidth(const std::string& text, const TextStyle& style) {
-  int box[4];
-  return vectorTextSize(text, style.size, box) ? box[1] : int(text.size()) * 4 * bitmapScale(style.size);
+  const OIIO::ROI roi = OIIO::ImageBufAlgo::text_size(text, style.size, kFont);
+  return roi.defined() ? roi.xend : int(text.size()) * 4 * bitmapScale(style.size);
 }
 
 int drawText(Image& image, int x, int y, const std::string& text, const TextStyle& style) {
   const int rgb[3] = {image.channelIndex("R"), image.channelIndex("G"), image.channelIndex("B")};
   if (rgb[0] < 0 || rgb[1] < 0 || rgb[2] < 0 || text.empty()) return 0;
-  int size[4], line[4];
-  if (!vectorTextSize(text, style.size, size) || !vectorTextSize("Ag|", style.size, line))
-    return drawBitmapText(image, rgb, x, y, text, style);
+  const OIIO::ROI size = OIIO::ImageBufAlgo::text_size(text, style.size, kFont);
+  if (!size.defined()) return drawBitmapText(image, rgb, x, y, text, style);
 
   // Render coverage into a small one-channel mask, then blend the colour
   // with it. The baseline sits a fixed ascent below y (measured on "Ag|")
   // so that labels line up whatever letters they hold.
-  const int ascent = -line[2] + 1;
-  const int maskWidth = size[1] + 2, maskHeight = line[3] - line[2] + 3;
-  std::vector<float> mask;
-  if (!oiioModule()->renderText(mask, maskWidth, maskHeight, 0, ascent, text, style.size, kFont))
+  const OIIO::ROI line = OIIO::ImageBufAlgo::text_size("Ag|", style.size, kFont);
+  const int ascent = -line.ybegin + 1;
+  const int maskWidth = size.xend + 2, maskHeight = line.yend - line.ybegin + 3;
+  OIIO::ImageBuf mask(OIIO::ImageSpec(maskWidth, maskHeight, 1, OIIO::TypeDesc::FLOAT));
+  OIIO::ImageBufAlgo::zero(mask);
+  if (!OIIO::ImageBufAlgo::render_text(mask, 0, ascent, text, style.size, kFont, 1.0f))
     return drawBitmapText(image, rgb, x, y, text, style);
   for (int my = 0; my < maskHeight; ++my)
-    for (int mx = 0; mx < maskWidth; ++mx)
-      blendPixel(image, rgb, x + mx, y + my, style.colour,
-                 std::clamp(mask[std::size_t(my) * maskWidth + mx], 0.0f, 1.0f));
-  return size[1];
+    for (int mx = 0; mx < maskWidth; ++mx) {
+      float coverage = 0;
+      mask.getpixel(mx, my, &coverage, 1);
+      blendPixel(image, rgb, x + mx, y + my, style.colour, std::clamp(coverage, 0.0f, 1.0f));
+    }
+  return size.xend;
 }
 
 }  // namespace lensrt
