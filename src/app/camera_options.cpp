@@ -113,9 +113,10 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "camera model: pinhole, thin (ideal thin lens), thick (the lens's paraxial model) or lens "
                  "(traced through every element of --lens); default pinhole")
       ->check(CLI::IsMember({"pinhole", "thin", "thick", "lens"}));
-  cmd.add_option("--lens", o.lens,
-                 "lens prescription: a .dat/.lens/.json file or a library name, e.g. --lens dgauss-50mm; the "
-                 "thin, thick and pinhole models then derive from it");
+  cmd.add_option(
+      "--lens", o.lens,
+      "lens prescription: a .dat/.lens/.json/.zmx file or a library name, e.g. --lens dgauss-50mm; the "
+      "thin, thick and pinhole models then derive from it");
   cmd.add_option("--fstop", o.fNumber, "f-number N, e.g. --fstop 2.8 (default: the lens wide open, else 2.8)")
       ->check(numberIn(0.5, 1024.0, "the f-number"));
   cmd.add_option("--focus", o.focus,

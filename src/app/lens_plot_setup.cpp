@@ -45,7 +45,7 @@ double parseFocusMm(const std::string& text) {
 }  // namespace
 
 void addLensViewOptions(CLI::App& command, LensViewOptions& o, bool outputRequired) {
-  command.add_option("lens", o.lens, "Lens file (.lens, .json, .dat) or library name, e.g. dgauss-50mm")
+  command.add_option("lens", o.lens, "Lens file (.lens, .json, .dat, .zmx) or library name, e.g. dgauss-50mm")
       ->required();
   command.add_option("-o,--output", o.output, "Output SVG file")->required(outputRequired);
   command.add_option("--fstop", o.fNumber, "Stop down to this f-number (default: widest)");

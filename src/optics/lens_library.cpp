@@ -11,7 +11,7 @@ namespace lensrt {
 namespace {
 
 constexpr std::uintmax_t kMaxFileBytes = 4u << 20;  // far beyond any real prescription
-const char* const kExtensions[] = {".lens", ".json", ".dat"};
+const char* const kExtensions[] = {".lens", ".json", ".dat", ".zmx"};
 
 }  // namespace
 
@@ -34,8 +34,10 @@ LensPrescription loadLens(const std::filesystem::path& path) {
     lens = parseTableLens(text, file);
   else if (ext == ".json")
     lens = parseJsonLens(text, file);
+  else if (ext == ".zmx" || ext == ".ZMX")
+    lens = parseZemaxLens(text, file);
   else
-    throw InputError(file, "unknown lens file extension '" + ext + "' (expected .lens, .json or .dat)");
+    throw InputError(file, "unknown lens file extension '" + ext + "' (expected .lens, .json, .dat or .zmx)");
   validatePrescription(lens);
   return lens;
 }

@@ -1,4 +1,4 @@
-// libFuzzer target for one lens reader (LENSRT_LENS_FORMAT: dat, lens or json),
+// libFuzzer target for one lens reader (LENSRT_LENS_FORMAT: dat, lens, json or zmx),
 // followed by everything a valid prescription goes through before rendering:
 // validation, the traced system, focus, stop-down, exit pupil bounds, rays.
 // Only InputError may escape the library; any other exception, a crash, a
@@ -27,6 +27,7 @@ LensPrescription parse(std::string_view text) {
   const std::string file = "fuzz." + format;
   if (format == "dat") return parsePbrtLens(text, file);
   if (format == "lens") return parseTableLens(text, file);
+  if (format == "zmx") return parseZemaxLens(text, file);
   return parseJsonLens(text, file);
 }
 
