@@ -32,7 +32,8 @@ struct DiffOptions {
 };
 
 constexpr const char* kDescription =
-    "Compare two images (any format OpenImageIO reads) channel by channel.\n"
+    "Compare two images channel by channel: EXR (through OpenEXR), PNG, JPEG,\n"
+    "Radiance HDR, BMP, TGA, PSD, GIF, PIC or PNM (through stb_image).\n"
     "Prints per channel and overall: max |A-B| and its pixel, mean |A-B|, RMSE,\n"
     "PSNR (peak 1.0), mean relative error |A-B|/max((|A|+|B|)/2, floor), and the\n"
     "pixels over the fail/warn thresholds. Thresholds and verdicts follow\n"

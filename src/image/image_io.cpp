@@ -1,6 +1,5 @@
 #include "image/image_io.h"
 
-#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -8,19 +7,21 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <random>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "core/error.h"
+#include "image/exr_io.h"
 #include "image/srgb.h"
+#include "image/stb_io.h"
 
 namespace lensrt {
 namespace {
 
 namespace fs = std::filesystem;
-namespace OIIO = OIIO_NAMESPACE;
 
 enum class FileKind { Exr, Png, Jpeg, Unknown };
 
@@ -36,13 +37,6 @@ FileKind kindOf(const fs::path& file) {
   if (ext == ".png") return FileKind::Png;
   if (ext == ".jpg" || ext == ".jpeg") return FileKind::Jpeg;
   return FileKind::Unknown;
-}
-
-// OIIO error texts can span lines; InputError promises one.
-std::string oneLine(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s.empty() ? "unknown OpenImageIO error" : s;
 }
 
 std::string errnoReason(int err) {
@@ -104,53 +98,55 @@ std::vector<int> previewChannels(const Image& image) {
   return {};
 }
 
-void writeToTemporary(const fs::path& file, const fs::path& tmp, FileKind kind, const Image& image,
-                      const ImageMetadata& metadata, const ImageWriteOptions& options) {
-  const char* format = kind == FileKind::Exr ? "openexr" : kind == FileKind::Png ? "png" : "jpeg";
-  auto out = OIIO::ImageOutput::create(format);
-  if (!out) throw InputError(file.string(), "OpenImageIO cannot write " + std::string(format) + " files");
+// The file's bytes, encoded in memory so that writing them is one checked
+// step (a full disk is reported, not half-written).
+std::string encode(const fs::path& file, FileKind kind, const Image& image, const ImageMetadata& metadata,
+                   const ImageWriteOptions& options) {
+  if (kind == FileKind::Exr) return encodeExr(file.string(), image, metadata, options.halfFloat);
+  const std::vector<int> source = previewChannels(image);
+  if (source.empty())
+    throw InputError(file.string(), "a .png/.jpg preview needs R,G,B channels, a single channel or three");
+  const std::size_t pixelCount = std::size_t(image.width) * image.height;
+  std::string rgb(pixelCount * 3, '\0');
+  for (std::size_t i = 0; i < pixelCount; ++i)
+    for (int c = 0; c < 3; ++c)
+      rgb[i * 3 + c] = char(srgbEncode8(image.pixels[i * image.channelCount() + source[c]]));
+  return encodePreview(file.string(), kind == FileKind::Png ? PreviewFormat::Png : PreviewFormat::Jpeg,
+                       image.width, image.height, rgb, metadata);
+}
 
-  std::vector<float> previewPixels;
-  const float* data = image.pixels.data();
-  OIIO::ImageSpec spec;
-  if (kind == FileKind::Exr) {
-    spec = OIIO::ImageSpec(image.width, image.height, int(image.channelCount()),
-                           options.halfFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
-    spec.channelnames = image.channels;
-    spec.alpha_channel = image.channelIndex("A");
-    spec.attribute("compression", "zip");
-    // A crop or tile: the data window inside the full frame's display window.
-    spec.x = image.originX;
-    spec.y = image.originY;
-    spec.full_x = 0;
-    spec.full_y = 0;
-    spec.full_width = image.fullWidth();
-    spec.full_height = image.fullHeight();
-  } else {
-    const std::vector<int> source = previewChannels(image);
-    if (source.empty())
-      throw InputError(file.string(), "a .png/.jpg preview needs R,G,B channels, a single channel or three");
-    spec = OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    if (kind == FileKind::Jpeg) spec.attribute("CompressionQuality", 95);
-    // Encode here rather than letting OIIO quantise linear values, so the
-    // preview is in sRGB whatever OIIO's colour defaults are.
-    previewPixels.resize(std::size_t(image.width) * image.height * 3);
-    const std::size_t pixelCount = std::size_t(image.width) * image.height;
-    for (std::size_t i = 0; i < pixelCount; ++i)
-      for (int c = 0; c < 3; ++c)
-        previewPixels[i * 3 + c] = srgbEncode8(image.pixels[i * image.channelCount() + source[c]]) / 255.0f;
-    data = previewPixels.data();
+void writeBytes(const fs::path& file, const fs::path& tmp, const std::string& bytes) {
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) throw InputError(file.string(), "cannot write: " + errnoReason(errno));
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      throw InputError(file.string(), "cannot write: " + errnoReason(err));
+    }
+    done += std::size_t(n);
   }
-  for (const auto& [key, value] : metadata) spec.attribute(key, value);
+  if (::close(fd) != 0) throw InputError(file.string(), "cannot write: " + errnoReason(errno));
+}
 
-  if (!out->open(tmp.string(), spec))
-    throw InputError(file.string(), "cannot write: " + oneLine(out->geterror()));
-  const bool written = out->write_image(OIIO::TypeDesc::FLOAT, data);
-  const std::string writeError = written ? "" : out->geterror();
-  const bool closed = out->close();
-  if (!written || !closed)
-    throw InputError(file.string(), "cannot write: " + oneLine(written ? out->geterror() : writeError));
+std::string readHead(const fs::path& file, std::size_t n) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string(), "cannot open: " + errnoReason(errno));
+  std::string head(n, '\0');
+  in.read(head.data(), std::streamsize(n));
+  head.resize(std::size_t(in.gcount()));
+  return head;
+}
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string(), "cannot open: " + errnoReason(errno));
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(file.string(), "cannot read the file");
+  return bytes;
 }
 
 }  // namespace
@@ -177,8 +173,9 @@ void writeImage(const fs::path& file, const Image& image, const ImageMetadata& m
     throw InputError(file.string(), "directory does not exist: " + dir.string());
   if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
 
+  const std::string bytes = encode(file, kind, image, metadata, options);
   TemporaryFile tmp(createTemporaryBeside(file));
-  writeToTemporary(file, tmp.path(), kind, image, metadata, options);
+  writeBytes(file, tmp.path(), bytes);
   fs::rename(tmp.path(), file, ec);
   if (ec) throw InputError(file.string(), "cannot replace the file: " + ec.message());
   tmp.release();
@@ -188,30 +185,17 @@ Image readImage(const fs::path& file, ImageMetadata* metadata) {
   std::error_code ec;
   if (!fs::exists(file, ec)) throw InputError(file.string(), "no such file");
   if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) throw InputError(file.string(), "cannot read image: " + oneLine(OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.depth > 1) throw InputError(file.string(), "volume images are not supported");
+  if (metadata) metadata->clear();
+  // EXR files are read through OpenEXR's own stream: renders can be large.
+  if (looksLikeExr(readHead(file, 4))) return readExrFile(file, metadata, kMaxImageValues);
+  return decodeStbImage(readAll(file), file.string(), kMaxImageValues);
+}
 
-  Image image(spec.width, spec.height, spec.channelnames);
-  // The data window relative to the display window's corner; a file whose
-  // display window is the data window is a whole frame.
-  image.originX = spec.x - spec.full_x;
-  image.originY = spec.y - spec.full_y;
-  if (spec.full_width != spec.width || spec.full_height != spec.height || image.originX || image.originY) {
-    image.frameWidth = spec.full_width;
-    image.frameHeight = spec.full_height;
-  }
-  for (std::size_t c = 0; c < image.channels.size(); ++c)
-    if (image.channels[c].empty()) image.channels[c] = "channel" + std::to_string(c);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw InputError(file.string(), "cannot read pixels: " + oneLine(in->geterror()));
-  if (metadata) {
-    metadata->clear();
-    for (const OIIO::ParamValue& p : spec.extra_attribs) (*metadata)[p.name().string()] = p.get_string();
-  }
-  in->close();
-  return image;
+Image decodeImage(std::string_view bytes, const std::string& name, ImageMetadata* metadata,
+                  std::size_t maxValues) {
+  if (metadata) metadata->clear();
+  if (looksLikeExr(bytes)) return decodeExr(bytes, name, metadata, maxValues);
+  return decodeStbImage(bytes, name, maxValues);
 }
 
 }  // namespace lensrt

@@ -1,11 +1,13 @@
-// Reading and writing images through OpenImageIO.
+// Reading and writing images: EXR through OpenEXR (exr_io.h), the other
+// formats through stb_image and stb_image_write (stb_io.h).
 //
 // .exr files hold the image as it is: linear float (or half) channels with
 // the names given (R,G,B,A, depth.Z, variance.R, ...), ZIP compression, and
 // the metadata as string attributes under their keys ("lensrt:spp", ...).
 // .png/.jpg files are an 8-bit preview of R,G,B only: each value is clamped
 // to [0,1] and encoded with the sRGB OETF (see srgb.h); no exposure or tone
-// curve is applied, so keep the EXR for anything quantitative.
+// curve is applied, so keep the EXR for anything quantitative. PNG files
+// carry the metadata as text chunks.
 //
 // Writes are atomic: the data goes to a hidden temporary file in the target
 // directory that is renamed over the target only once complete, so a failed
@@ -13,7 +15,10 @@
 // any existing file untouched and no temporary behind.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "image/image.h"
 
@@ -29,13 +34,24 @@ struct ImageWriteOptions {
 void writeImage(const std::filesystem::path& file, const Image& image, const ImageMetadata& metadata,
                 const ImageWriteOptions& options = {});
 
-// Reads the first subimage of any format OpenImageIO reads, all channels as
-// float with the file's channel names. 8-bit formats give their encoded
-// values scaled to [0,1] (no sRGB decoding). EXR files may list channels in
-// a different order than they were written in: look channels up by name.
-// When `metadata` is given it receives every header attribute as a string.
+// The most values (width x height x channels) a file may hold: 16 GiB of
+// floats, so a corrupt header cannot ask for more memory than any machine has.
+constexpr std::size_t kMaxImageValues = std::size_t(1) << 32;
+
+// Reads an EXR (the first part), PNG, JPEG, Radiance .hdr, BMP, TGA, PSD,
+// GIF, PIC or PNM file, recognised by its content, all channels as float with
+// the file's channel names (R,G,B,A, or Y for grey). 8- and 16-bit formats
+// give their stored values scaled to [0,1] (no sRGB decoding). EXR files may
+// list channels in a different order than they were written in: look
+// channels up by name. When `metadata` is given it receives the EXR header's
+// attributes as strings (empty for the other formats).
 // Throws InputError(file, reason) when the file cannot be read.
 Image readImage(const std::filesystem::path& file, ImageMetadata* metadata = nullptr);
+
+// The same from bytes in memory (`name` labels errors): the fuzz target's
+// entry point, with a smaller `maxValues` there.
+Image decodeImage(std::string_view bytes, const std::string& name, ImageMetadata* metadata = nullptr,
+                  std::size_t maxValues = kMaxImageValues);
 
 // True when writeImage accepts the file's extension: .exr, .png, .jpg, .jpeg
 // (any case). Lets commands reject a bad output name before rendering.

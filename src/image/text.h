@@ -1,6 +1,6 @@
 // Text labels drawn into images (heatmap scales, contact-sheet captions).
 //
-// Uses OpenImageIO's FreeType text rendering with DejaVu Sans Mono (Debian
+// Drawn with stb_truetype from DejaVu Sans Mono (Debian
 // package fonts-dejavu-core). When that font cannot be found, a built-in
 // 3x5 pixel font (digits, capitals and common punctuation, scaled up) is
 // used instead, so labels never silently disappear.

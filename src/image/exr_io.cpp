@@ -1,0 +1,309 @@
+#include "image/exr_io.h"
+
+#include <Iex.h>
+#include <Imath/half.h>
+#include <ImfChannelList.h>
+#include <ImfCompressionAttribute.h>
+#include <ImfDoubleAttribute.h>
+#include <ImfFloatAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfIntAttribute.h>
+#include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
+#include <ImfStdIO.h>
+#include <ImfStringAttribute.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include "core/error.h"
+
+namespace lensrt {
+namespace {
+
+// OpenEXR's messages can span lines; InputError promises one.
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s.empty() ? "unknown OpenEXR error" : s;
+}
+
+// The encoded file collects here; the caller writes it out and checks that
+// write, which OpenEXR's own file stream would report only in part (the
+// offset table is written from a destructor that swallows errors).
+class MemoryOStream : public Imf::OStream {
+ public:
+  explicit MemoryOStream(const std::string& name) : Imf::OStream(name.c_str()) {}
+  void write(const char c[], int n) override {
+    if (position_ + std::size_t(n) > bytes_.size()) bytes_.resize(position_ + std::size_t(n));
+    std::memcpy(bytes_.data() + position_, c, std::size_t(n));
+    position_ += std::size_t(n);
+  }
+  uint64_t tellp() override { return position_; }
+  void seekp(uint64_t pos) override { position_ = std::size_t(pos); }
+  std::string take() { return std::move(bytes_); }
+
+ private:
+  std::string bytes_;
+  std::size_t position_ = 0;
+};
+
+class MemoryIStream : public Imf::IStream {
+ public:
+  MemoryIStream(std::string_view bytes, const std::string& name)
+      : Imf::IStream(name.c_str()), bytes_(bytes) {}
+  bool read(char c[], int n) override {
+    if (n < 0 || position_ > bytes_.size() || std::size_t(n) > bytes_.size() - position_)
+      throw Iex::InputExc("unexpected end of file");
+    std::memcpy(c, bytes_.data() + position_, std::size_t(n));
+    position_ += std::size_t(n);
+    return position_ < bytes_.size();
+  }
+  uint64_t tellg() override { return position_; }
+  void seekg(uint64_t pos) override { position_ = std::size_t(std::min<uint64_t>(pos, bytes_.size() + 1)); }
+
+ private:
+  std::string_view bytes_;
+  std::size_t position_ = 0;
+};
+
+// "YYYY:MM:DD HH:MM:SS" local time, the TIFF/EXIF form OpenImageIO wrote.
+std::string captureDate() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);
+  return text;
+}
+
+std::string compressionName(Imf::Compression c) {
+  switch (c) {
+    case Imf::NO_COMPRESSION:
+      return "none";
+    case Imf::RLE_COMPRESSION:
+      return "rle";
+    case Imf::ZIPS_COMPRESSION:
+      return "zips";
+    case Imf::ZIP_COMPRESSION:
+      return "zip";
+    case Imf::PIZ_COMPRESSION:
+      return "piz";
+    case Imf::PXR24_COMPRESSION:
+      return "pxr24";
+    case Imf::B44_COMPRESSION:
+      return "b44";
+    case Imf::B44A_COMPRESSION:
+      return "b44a";
+    case Imf::DWAA_COMPRESSION:
+      return "dwaa";
+    case Imf::DWAB_COMPRESSION:
+      return "dwab";
+    default:
+      return "unknown";
+  }
+}
+
+std::string numberText(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+void collectMetadata(const Imf::Header& header, ImageMetadata& metadata) {
+  metadata.clear();
+  for (auto it = header.begin(); it != header.end(); ++it) {
+    const std::string name = it.name();
+    const Imf::Attribute& a = it.attribute();
+    const std::string type = a.typeName();
+    if (type == "string") {
+      metadata[name == "capDate" ? "DateTime" : name] = static_cast<const Imf::StringAttribute&>(a).value();
+    } else if (type == "compression") {
+      metadata["compression"] = compressionName(static_cast<const Imf::CompressionAttribute&>(a).value());
+    } else if (type == "int") {
+      metadata[name] = std::to_string(static_cast<const Imf::IntAttribute&>(a).value());
+    } else if (type == "float") {
+      metadata[name == "pixelAspectRatio" ? "PixelAspectRatio" : name] =
+          numberText(static_cast<const Imf::FloatAttribute&>(a).value());
+    } else if (type == "double") {
+      metadata[name] = numberText(static_cast<const Imf::DoubleAttribute&>(a).value());
+    }
+  }
+}
+
+// Metadata read from an EXR holds the header's own attributes too (under
+// the names readImage gives them); writing it back must not turn those into
+// strings. They, and the multi-part file's structural ones, are left to the
+// header; every other key is written as a string.
+bool isFreeKey(const Imf::Header& header, const std::string& key) {
+  static constexpr std::array<const char*, 8> kReserved{
+      "DateTime", "compression", "PixelAspectRatio", "name", "type", "version", "chunkCount", "tiles"};
+  for (const char* reserved : kReserved)
+    if (key == reserved) return false;
+  const auto existing = header.find(key);
+  return existing == header.end() || std::string(existing.attribute().typeName()) == "string";
+}
+
+// OpenImageIO's channel order, which lensrt's readers saw before: by layer
+// (the name up to its last '.'), then R, G, B, A, X, Y, Z, then by name.
+int channelRank(const std::string& suffix) {
+  static constexpr std::array<const char*, 7> kFirst{"R", "G", "B", "A", "X", "Y", "Z"};
+  for (std::size_t i = 0; i < kFirst.size(); ++i)
+    if (suffix.size() == 1 && std::toupper(static_cast<unsigned char>(suffix[0])) == kFirst[i][0])
+      return int(i);
+  return int(kFirst.size());
+}
+
+struct ChannelKey {
+  std::string name, layer, suffix;
+  int rank;
+};
+
+std::vector<std::string> orderedChannels(const Imf::ChannelList& channels, const std::string& name) {
+  std::vector<ChannelKey> keys;
+  for (auto it = channels.begin(); it != channels.end(); ++it) {
+    if (it.channel().xSampling != 1 || it.channel().ySampling != 1)
+      throw InputError(name,
+                       std::string("channel '") + it.name() + "' is subsampled, which is not supported");
+    const std::string full = it.name();
+    const std::size_t dot = full.find_last_of('.');
+    const std::string layer = dot == std::string::npos ? "" : full.substr(0, dot + 1);
+    const std::string suffix = dot == std::string::npos ? full : full.substr(dot + 1);
+    keys.push_back({full, layer, suffix, channelRank(suffix)});
+  }
+  std::sort(keys.begin(), keys.end(), [](const ChannelKey& a, const ChannelKey& b) {
+    if (a.layer != b.layer) return a.layer < b.layer;
+    if (a.rank != b.rank) return a.rank < b.rank;
+    return a.suffix < b.suffix;
+  });
+  std::vector<std::string> names;
+  for (const ChannelKey& k : keys) names.push_back(k.name);
+  return names;
+}
+
+Image decode(Imf::IStream& stream, const std::string& name, ImageMetadata* metadata, std::size_t maxValues) {
+  try {
+    Imf::InputFile in(stream);
+    const Imf::Header& header = in.header();
+    const Imath::Box2i data = header.dataWindow(), display = header.displayWindow();
+    const std::int64_t width = std::int64_t(data.max.x) - data.min.x + 1;
+    const std::int64_t height = std::int64_t(data.max.y) - data.min.y + 1;
+    const std::int64_t fullWidth = std::int64_t(display.max.x) - display.min.x + 1;
+    const std::int64_t fullHeight = std::int64_t(display.max.y) - display.min.y + 1;
+    const std::vector<std::string> channels = orderedChannels(header.channels(), name);
+    if (channels.empty()) throw InputError(name, "the image has no channels");
+    if (width <= 0 || height <= 0 || width > INT32_MAX || height > INT32_MAX || fullWidth <= 0 ||
+        fullHeight <= 0 || fullWidth > INT32_MAX || fullHeight > INT32_MAX)
+      throw InputError(name, "the image's data or display window is empty or too large");
+    if (double(width) * double(height) * double(channels.size()) > double(maxValues))
+      throw InputError(name, "the image is " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " with " + std::to_string(channels.size()) + " channels, more than " +
+                                 std::to_string(maxValues) + " values");
+
+    // The data window relative to the display window's corner; a file whose
+    // display window is the data window is a whole frame.
+    const std::int64_t originX = std::int64_t(data.min.x) - display.min.x;
+    const std::int64_t originY = std::int64_t(data.min.y) - display.min.y;
+    if (originX < INT32_MIN || originY < INT32_MIN || originX + width - 1 > INT32_MAX ||
+        originY + height - 1 > INT32_MAX)
+      throw InputError(name, "the image's data window lies too far from its display window");
+    Image image(int(width), int(height), channels);
+    image.originX = int(originX);
+    image.originY = int(originY);
+    if (fullWidth != width || fullHeight != height || image.originX || image.originY) {
+      image.frameWidth = int(fullWidth);
+      image.frameHeight = int(fullHeight);
+    }
+    const std::size_t pixelStride = channels.size() * sizeof(float);
+    Imf::FrameBuffer frame;
+    for (std::size_t c = 0; c < channels.size(); ++c)
+      frame.insert(channels[c], Imf::Slice::Make(Imf::FLOAT, &image.pixels[c], data, pixelStride,
+                                                 pixelStride * std::size_t(width)));
+    in.setFrameBuffer(frame);
+    in.readPixels(data.min.y, data.max.y);
+    if (metadata) collectMetadata(header, *metadata);
+    return image;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(name, "cannot read image: " + oneLine(e.what()));
+  }
+}
+
+}  // namespace
+
+bool looksLikeExr(std::string_view head) {
+  return head.size() >= 4 && static_cast<unsigned char>(head[0]) == 0x76 &&
+         static_cast<unsigned char>(head[1]) == 0x2f && static_cast<unsigned char>(head[2]) == 0x31 &&
+         static_cast<unsigned char>(head[3]) == 0x01;
+}
+
+std::string encodeExr(const std::string& name, const Image& image, const ImageMetadata& metadata,
+                      bool halfFloat) {
+  if (std::set<std::string>(image.channels.begin(), image.channels.end()).size() != image.channels.size())
+    throw InputError(name, "cannot write an EXR with two channels of the same name");
+  try {
+    const Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(image.fullWidth() - 1, image.fullHeight() - 1));
+    const Imath::Box2i data(Imath::V2i(image.originX, image.originY),
+                            Imath::V2i(image.originX + image.width - 1, image.originY + image.height - 1));
+    Imf::Header header(display, data, 1.0f, Imath::V2f(0, 0), 1.0f, Imf::INCREASING_Y, Imf::ZIP_COMPRESSION);
+    for (const std::string& channel : image.channels)
+      header.channels().insert(channel, Imf::Channel(halfFloat ? Imf::HALF : Imf::FLOAT));
+    const auto date = metadata.find("DateTime");
+    header.insert("capDate", Imf::StringAttribute(date != metadata.end() ? date->second : captureDate()));
+    for (const auto& [key, value] : metadata)
+      if (isFreeKey(header, key)) header.insert(key, Imf::StringAttribute(value));
+
+    // OpenEXR writes a frame buffer of the file's pixel type: halves are
+    // converted here (Imath's round to nearest even).
+    std::vector<Imath::half> halves;
+    if (halfFloat) halves.assign(image.pixels.begin(), image.pixels.end());
+    const Imf::PixelType type = halfFloat ? Imf::HALF : Imf::FLOAT;
+    const std::size_t valueSize = halfFloat ? sizeof(Imath::half) : sizeof(float);
+    const char* base = halfFloat ? reinterpret_cast<const char*>(halves.data())
+                                 : reinterpret_cast<const char*>(image.pixels.data());
+    const std::size_t pixelStride = image.channelCount() * valueSize;
+    Imf::FrameBuffer frame;
+    for (std::size_t c = 0; c < image.channelCount(); ++c)
+      frame.insert(image.channels[c], Imf::Slice::Make(type, base + c * valueSize, data, pixelStride,
+                                                       pixelStride * std::size_t(image.width)));
+    MemoryOStream stream(name);
+    {
+      Imf::OutputFile out(stream, header);
+      out.setFrameBuffer(frame);
+      out.writePixels(image.height);
+    }  // the destructor writes the offset table
+    return stream.take();
+  } catch (const std::exception& e) {
+    throw InputError(name, "cannot write: " + oneLine(e.what()));
+  }
+}
+
+Image readExrFile(const std::filesystem::path& file, ImageMetadata* metadata, std::size_t maxValues) {
+  std::unique_ptr<Imf::StdIFStream> stream;
+  try {
+    stream = std::make_unique<Imf::StdIFStream>(file.c_str());
+  } catch (const std::exception& e) {
+    throw InputError(file.string(), "cannot open: " + oneLine(e.what()));
+  }
+  return decode(*stream, file.string(), metadata, maxValues);
+}
+
+Image decodeExr(std::string_view bytes, const std::string& name, ImageMetadata* metadata,
+                std::size_t maxValues) {
+  MemoryIStream stream(bytes, name);
+  return decode(stream, name, metadata, maxValues);
+}
+
+}  // namespace lensrt
