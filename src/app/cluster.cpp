@@ -58,6 +58,15 @@ std::optional<Cluster::Failure> Cluster::agree(const std::optional<Failure>& min
   return failure;
 }
 
+std::string Cluster::shareFromMain(const std::string& text) const {
+  if (size_ == 1) return text;
+  int length = int(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  std::string shared = isMain() ? text : std::string(std::size_t(length), '\0');
+  MPI_Bcast(shared.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  return shared;
+}
+
 void Cluster::abort(int status) const {
   if (initialized_) MPI_Abort(MPI_COMM_WORLD, status);
   std::exit(status);
@@ -71,6 +80,10 @@ Cluster::~Cluster() = default;
 std::optional<Cluster::Failure> Cluster::agree(const std::optional<Failure>& mine) {
   agreed_ = true;
   return mine;
+}
+
+std::string Cluster::shareFromMain(const std::string& text) const {
+  return text;
 }
 
 void Cluster::abort(int status) const {

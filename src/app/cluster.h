@@ -33,6 +33,8 @@ class Cluster {
   // for one that has given up.
   std::optional<Failure> agree(const std::optional<Failure>& mine);
   bool agreed() const { return agreed_; }
+  // Collective: rank 0's `text` on every rank (the others' is ignored).
+  std::string shareFromMain(const std::string& text) const;
   // Ends every rank of the job with `status` (an error after set-up).
   [[noreturn]] void abort(int status) const;
 

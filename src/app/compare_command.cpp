@@ -16,8 +16,10 @@
 #include <vector>
 
 #include "app/camera_options.h"
+#include "app/cluster.h"
 #include "app/command.h"
 #include "app/compare_report.h"
+#include "app/distributed_render.h"
 #include "app/render_job.h"
 #include "app/render_options.h"
 #include "app/text_file.h"
@@ -109,7 +111,13 @@ double commonHeatmapScale(const std::vector<std::vector<float>>& errors) {
   return all[k] > 0 ? double(all[k]) : 1.0;
 }
 
-int runCompare(const CompareArgs& args, const CommandContext& context) {
+int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
+  // Under MPI every rank renders each model (rank 0 handing out strips);
+  // rank 0 alone speaks and writes the directory.
+  const Cluster& cluster = *context.cluster;
+  const bool leader = cluster.isMain();
+  CompareArgs args = givenArgs;
+  if (!leader) args.quiet = true;
   // 1. Everything that can fail before rendering.
   SceneOptions sceneOptions;
   sceneOptions.scene = args.scene;
@@ -127,7 +135,7 @@ int runCompare(const CompareArgs& args, const CommandContext& context) {
   const std::string& envFile = sceneOptions.environment.file;
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
     throw InputError(envFile, "environment map not found");
-  const std::filesystem::path dir = prepareOutputDir(args.outputDir);
+  const std::filesystem::path dir = leader ? prepareOutputDir(args.outputDir) : std::filesystem::path();
 
   Warnings warnings([&](const std::string& message) {
     if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
@@ -154,19 +162,31 @@ int runCompare(const CompareArgs& args, const CommandContext& context) {
     if (options.model != "pinhole") options.film.clear();
     cameras.push_back(job.makeCamera(options, warnings));
   }
+  if (cluster.size() > 1) {
+    // The full lens's identity covers the scene, the lens and the settings.
+    if (const auto failure =
+            setUpTogether(*context.cluster, args.scene, job.identity(*cameras.back(), settings))) {
+      if (leader)
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
+                   failure->line);
+      return failure->status;
+    }
+  }
 
   // 2. Render and write each model's EXR.
   std::vector<RenderJobResult> results;
   for (std::size_t i = 0; i < kModels.size(); ++i) {
     if (!args.quiet)
       fmt::print(stderr, "lensrt: compare: {} ({}/{})\n", cameras[i]->describe(), i + 1, kModels.size());
-    results.push_back(job.render(*cameras[i], settings, args.quiet));
+    results.push_back(job.render(*cameras[i], settings, args.quiet, cluster));
+    if (!leader) continue;
     writeImage(dir / (std::string(kModels[i]) + ".exr"), results.back().output.image,
                job.metadata(*cameras[i], settings, results.back(), context.commandLine));
     if (results.back().output.droppedSamples > 0)
       warnings.warn(fmt::format("{}: {} samples with NaN or infinite radiance were dropped", kModels[i],
                                 results.back().output.droppedSamples));
   }
+  if (!leader) return 0;
   const std::size_t lensIndex = kModels.size() - 1;
   const Image& lensImage = results[lensIndex].output.image;
 

@@ -1,5 +1,7 @@
 #include "app/distributed_render.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -9,11 +11,49 @@
 #include <thread>
 #include <vector>
 
+#include "render/render_identity.h"
+
 #if LENSRT_WITH_MPI
 #include <mpi.h>
 #endif
 
 namespace lensrt {
+
+namespace {
+
+// The identity's values, NUL-separated (no value holds a NUL).
+std::string packIdentity(const ImageMetadata& identity) {
+  std::string text;
+  for (const char* key : kRenderIdentityKeys) {
+    const auto it = identity.find(key);
+    text += (it == identity.end() ? std::string() : it->second) + '\0';
+  }
+  return text;
+}
+
+ImageMetadata unpackIdentity(const std::string& text) {
+  ImageMetadata identity;
+  std::size_t at = 0;
+  for (const char* key : kRenderIdentityKeys) {
+    const std::size_t end = std::min(text.find('\0', at), text.size());
+    identity[key] = text.substr(at, end - at);
+    at = std::min(end + 1, text.size());
+  }
+  return identity;
+}
+
+}  // namespace
+
+std::optional<Cluster::Failure> setUpTogether(Cluster& cluster, const std::string& scene,
+                                              const ImageMetadata& identity) {
+  if (auto failure = cluster.agree(std::nullopt)) return failure;
+  const ImageMetadata main = unpackIdentity(cluster.shareFromMain(packIdentity(identity)));
+  std::optional<Cluster::Failure> mine;
+  if (const std::string diff = renderIdentityDifference(identity, main); !diff.empty())
+    mine = Cluster::Failure{cluster.rank(), 1,
+                            fmt::format("{}: this rank's render differs from rank 0's: {}", scene, diff)};
+  return cluster.agree(mine);
+}
 
 #if LENSRT_WITH_MPI
 namespace {

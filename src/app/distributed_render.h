@@ -8,15 +8,28 @@
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <string>
 
 #include "app/cluster.h"
 #include "camera/camera.h"
+#include "image/image.h"
 #include "render/film_state.h"
 #include "render/integrator.h"
 #include "render/progress.h"
 #include "render/renderer.h"
 
 namespace lensrt {
+
+// Collective, called by every rank whose set-up (scene, camera) succeeded; a
+// rank whose set-up failed calls cluster.agree with its failure instead.
+// Waits for the others, then checks that every rank renders what rank 0
+// renders (`identity`: scene files, camera, settings, seed), so that a node
+// with another copy of the scene or the lens, or another working directory,
+// fails the job instead of painting its strips from another render. Returns
+// the lowest failing rank's failure, the same on every rank.
+std::optional<Cluster::Failure> setUpTogether(Cluster& cluster, const std::string& scene,
+                                              const ImageMetadata& identity);
 
 // Rank 0: continues `state` to settings.samplesPerPixel like renderPasses,
 // with every rank's help. Stops early (returning false) when `control` asks

@@ -114,10 +114,13 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  // Only `render` is shared between the ranks of an MPI job; other commands
-  // run on rank 0 alone.
-  const CLI::App* render = commands.front().first;
-  const bool shared = cluster.size() > 1 && render->parsed();
+  // `render` and `compare` are shared between the ranks of an MPI job; other
+  // commands run on rank 0 alone.
+  const bool shared =
+      cluster.size() > 1 && std::any_of(commands.begin(), commands.end(), [](const auto& command) {
+        return command.first->parsed() &&
+               (command.first->get_name() == "render" || command.first->get_name() == "compare");
+      });
   if (cluster.size() > 1 && !shared && !cluster.isMain()) return 0;
   // One error line. In a shared render, a rank failing in its set-up (scene,
   // camera) waits for the others to get there, so that the job reports the

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -167,18 +168,22 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
   const ImageMetadata identity = job.identity(*camera, settings);
-  FilmState state = args.resume.empty() || !leader ? FilmState(region, settings.aovs)
-                                                   : readCheckpoint(args.resume, identity, region);
-  if (state.samplesDone() > settings.samplesPerPixel)
-    throw CLI::ValidationError(
-        "--spp", fmt::format("{} has {} samples per pixel already, more than --spp {}", args.resume,
-                             state.samplesDone(), settings.samplesPerPixel));
+  // The running sums live on rank 0 alone: the other ranks get strips.
+  std::optional<FilmState> leaderState;
+  if (leader) {
+    leaderState = args.resume.empty() ? FilmState(region, settings.aovs)
+                                      : readCheckpoint(args.resume, identity, region);
+    if (leaderState->samplesDone() > settings.samplesPerPixel)
+      throw CLI::ValidationError(
+          "--spp", fmt::format("{} has {} samples per pixel already, more than --spp {}", args.resume,
+                               leaderState->samplesDone(), settings.samplesPerPixel));
+  }
 
   holding = false;
   for (const std::string& message : held) print(message);
   if (shared) {
     // Every rank is set up: go on together, or stop together with the first error.
-    if (const auto failure = cluster.agree(std::nullopt)) {
+    if (const auto failure = setUpTogether(cluster, args.scene, identity)) {
       if (leader)
         fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
                    failure->line);
@@ -190,6 +195,7 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
     workForMain(cluster, *camera, job.integrator(), settings, [&] { return interrupt.signal(); });
     return interrupt.signal() ? interrupt.exitStatus() : 0;
   }
+  FilmState& state = *leaderState;
 
   // Passes, checkpoints and signals (the handlers only while rendering).
   const InterruptHandler interrupt;

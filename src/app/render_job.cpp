@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/cluster.h"
+#include "app/distributed_render.h"
 #include "app/scene_digest.h"
 #include "core/error.h"
 #include "image/image_io.h"
@@ -136,6 +138,28 @@ RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& se
         Progress::styleFor(stderr, quiet));
     result.output = renderImage(camera, *integrator_, settings, &progress);
   }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& settings, bool quiet,
+                                  const Cluster& cluster) const {
+  if (cluster.size() == 1) return render(camera, settings, quiet);
+  if (!cluster.isMain()) {
+    workForMain(cluster, camera, *integrator_, settings, [] { return 0; });
+    return {};
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const FilmGeometry& film = camera.film();
+  FilmState state(settings.region.value_or(PixelRegion::wholeFrame(film.width, film.height)), settings.aovs);
+  {
+    Progress progress(state.region().pixelCount() * std::uint64_t(settings.samplesPerPixel),
+                      Progress::styleFor(stderr, quiet));
+    int signal = 0;
+    renderAcrossRanks(cluster, camera, *integrator_, settings, state, PassControl{}, &progress, signal);
+  }
+  RenderJobResult result;
+  result.output = renderOutput(camera, state);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

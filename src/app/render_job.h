@@ -36,6 +36,8 @@ struct RenderJobResult {
   double seconds = 0.0;
 };
 
+class Cluster;
+
 class RenderJob {
  public:
   // Loads the scene and builds everything but the camera. Throws InputError.
@@ -54,6 +56,11 @@ class RenderJob {
 
   // Renders with a progress bar on stderr unless `quiet`.
   RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
+  // The same shared by the ranks of an MPI job (app/distributed_render.h):
+  // rank 0 returns the image, the other ranks render the strips it sends
+  // and return an empty result. Every rank calls it for the same camera.
+  RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet,
+                         const Cluster& cluster) const;
 
   // Continues `state` to settings.samplesPerPixel in passes steered by
   // `control` (see renderPasses); `finished` says whether it got there.
