@@ -116,7 +116,9 @@ void renderPart(const Camera& camera, const Integrator& integrator, const Render
 
 bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integrator& integrator,
                        const RenderSettings& settings, FilmState& state, const PassControl& control,
-                       Progress* progress, int& signal) {
+                       Progress* progress, int& signal, GatherCost* cost) {
+  GatherCost spent;
+  using Clock = std::chrono::steady_clock;
   const std::vector<PixelRegion> strips = stripsOf(state.region(), std::max(1, settings.tileSize));
   const int target = settings.samplesPerPixel;
   std::vector<int> waiting;  // ranks whose request for work is not answered yet
@@ -127,7 +129,9 @@ bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integ
     int flag = 0;
     MPI_Iprobe(MPI_ANY_SOURCE, kTagRequest, MPI_COMM_WORLD, &flag, &status);
     if (!flag) return false;
+    const auto start = Clock::now();
     const std::vector<std::byte> bytes = receiveBytes(status);
+    spent.bytes += bytes.size();
     if (bytes.empty()) throw std::runtime_error("an empty request from a rank");
     if (bytes[0] != std::byte{0} && signal == 0) signal = int(bytes[0]);
     if (bytes.size() > 1) {
@@ -138,12 +142,14 @@ bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integ
       --outstanding;
     }
     waiting.push_back(status.MPI_SOURCE);
+    spent.seconds += std::chrono::duration<double>(Clock::now() - start).count();
     return true;
   };
   const auto handOut = [&](std::atomic<int>& next, int passTarget, int& outstanding) {
     while (!waiting.empty()) {
       const int i = next.fetch_add(1);
       if (i >= int(strips.size())) return;
+      const auto start = Clock::now();
       std::vector<std::byte> message(4);
       std::memcpy(message.data(), &passTarget, 4);
       const std::vector<std::byte> part = extract(state, strips[std::size_t(i)]).toBytes();
@@ -151,6 +157,8 @@ bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integ
       MPI_Send(message.data(), int(message.size()), MPI_BYTE, waiting.back(), kTagStrip, MPI_COMM_WORLD);
       waiting.pop_back();
       ++outstanding;
+      spent.bytes += message.size();
+      spent.seconds += std::chrono::duration<double>(Clock::now() - start).count();
     }
   };
 
@@ -202,6 +210,7 @@ bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integ
   while (int(waiting.size()) < cluster.size() - 1)
     if (!serve(none, target, outstanding)) std::this_thread::sleep_for(kPoll);
   for (const int rank : waiting) MPI_Send(nullptr, 0, MPI_BYTE, rank, kTagEnd, MPI_COMM_WORLD);
+  if (cost) *cost = spent;
   return finished;
 }
 
@@ -229,7 +238,7 @@ void workForMain(const Cluster&, const Camera& camera, const Integrator& integra
 #else
 
 bool renderAcrossRanks(const Cluster&, const Camera&, const Integrator&, const RenderSettings&, FilmState&,
-                       const PassControl&, Progress*, int&) {
+                       const PassControl&, Progress*, int&, GatherCost*) {
   throw std::logic_error("lensrt was built without MPI");
 }
 

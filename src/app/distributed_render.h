@@ -7,6 +7,7 @@
 // any number of ranks and any order the strips come back in.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -31,13 +32,21 @@ namespace lensrt {
 std::optional<Cluster::Failure> setUpTogether(Cluster& cluster, const std::string& scene,
                                               const ImageMetadata& identity);
 
+// What sharing cost rank 0 (tools/bench-scaleout reports it): the time its
+// main thread spent packing, sending, receiving and unpacking the other
+// ranks' strips with their running sums, and the bytes that moved.
+struct GatherCost {
+  double seconds = 0;
+  std::uint64_t bytes = 0;
+};
+
 // Rank 0: continues `state` to settings.samplesPerPixel like renderPasses,
 // with every rank's help. Stops early (returning false) when `control` asks
 // to or a rank reports a signal; `signal` then holds the first one reported
 // (0 when none). Ends the other ranks' workForMain in both cases.
 bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integrator& integrator,
                        const RenderSettings& settings, FilmState& state, const PassControl& control,
-                       Progress* progress, int& signal);
+                       Progress* progress, int& signal, GatherCost* cost = nullptr);
 
 // The other ranks: render the strips rank 0 sends until it says the job is
 // over. `signal()` (0: none) is reported to rank 0 with each strip.

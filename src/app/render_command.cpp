@@ -201,9 +201,15 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   const InterruptHandler interrupt;
   const auto started = std::chrono::steady_clock::now();
   auto lastCheckpoint = started;
+  GatherCost gather;  // under MPI, once the render is done
   const auto metadataOf = [&](const RenderJobResult& r) {
     ImageMetadata m = job.metadata(*camera, settings, r, context.commandLine);
     m["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
+    if (shared) m["lensrt:mpi_ranks"] = std::to_string(cluster.size());
+    if (gather.bytes > 0) {
+      m["lensrt:gather_seconds"] = fmt::format("{:.3f}", gather.seconds);
+      m["lensrt:gather_bytes"] = std::to_string(gather.bytes);
+    }
     return m;
   };
   PassControl control;
@@ -227,7 +233,7 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
       Progress progress(region.pixelCount() * std::uint64_t(remaining),
                         Progress::styleFor(stderr, args.quiet));
       finished = renderAcrossRanks(cluster, *camera, job.integrator(), settings, state, control, &progress,
-                                   rankSignal);
+                                   rankSignal, &gather);
     }
     result.output = renderOutput(*camera, state);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

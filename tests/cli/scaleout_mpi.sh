@@ -4,8 +4,8 @@
 #   models     2 ranks render the bits of one process for every camera model
 #   failures   a bad scene, a rank without the scene or with another copy of
 #              it, a rank killed mid-render: the job fails once, no output
-#   resume     checkpoints written and resumed under MPI (and across) are
-#              bit-identical to an uninterrupted render
+#   resume     checkpoints of a crop written and resumed under MPI (and
+#              across) are bit-identical to an uninterrupted render
 #   interrupt  SIGINT/SIGTERM to the ranks or to mpirun: a valid, resumable
 #              EXR with the samples done, bit-identical to a render of that spp
 #   compare    lensrt compare under MPI writes the EXRs of one process
@@ -98,8 +98,9 @@ failures)
 
 resume)
   # shellcheck disable=SC2054
-  scene=(render "$src/scenes/cornell.gltf" --res 24x17 -q --aov depth,variance --camera lens --lens dgauss-50mm
-    --tile-size 4)
+  # A crop, so that the region goes through the ranks and the checkpoints too.
+  scene=(render "$src/scenes/cornell.gltf" --res 24x17 --crop 2,21,1,16 -q --aov depth,variance --camera lens
+    --lens dgauss-50mm --tile-size 4)
   base=("${scene[@]}" --seed 5)
   "$lensrt" "${base[@]}" --spp 7 -o one.exr
   # Checkpointed under MPI (one checkpoint after each pass but the last).
