@@ -37,6 +37,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
   Vec3f prevPosition;
 
   for (int depth = 0;; ++depth) {
+    if (settings_.observer) settings_.observer->traced(depth == 0 ? RayKind::Camera : RayKind::Bounce, ray);
     const std::optional<SurfaceHit> hit = scene_.intersect(ray);
     if (!hit) {
       const Rgb le = environment_.eval(ray.direction);
@@ -88,6 +89,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
             shadow.tMax = len * (1 - 1e-4f) - offsetScale(target);
           }
 
+          if (settings_.observer) settings_.observer->traced(RayKind::Shadow, shadow);
           if (!scene_.occluded(shadow)) {
             const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(woLocal, wiLocal));
             out.radiance += beta * f * ls->radiance * (w / ls->pdf);

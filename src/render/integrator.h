@@ -8,6 +8,7 @@
 #include "render/environment.h"
 #include "render/lights.h"
 #include "render/material_eval.h"
+#include "render/ray_observer.h"
 #include "render/sampler.h"
 #include "scene/render_scene.h"
 
@@ -19,6 +20,8 @@ struct IntegratorSettings {
   int maxDepth = 8;
   // Russian roulette starts after this many bounces.
   int rouletteDepth = 3;
+  // Sees every ray before it is traced (measuring tools only); not owned.
+  RayObserver* observer = nullptr;
 };
 
 // One camera path's result: radiance and what the first hit says (for AOVs).

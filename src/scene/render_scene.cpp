@@ -1,6 +1,7 @@
 #include "scene/render_scene.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -145,6 +146,12 @@ void alphaFilter(const RTCFilterFunctionNArguments* args) {
   }
 }
 
+// Embree's memory monitor: counts what the device allocates (never refuses).
+bool countEmbreeBytes(void* user, ssize_t bytes, bool /*post*/) {
+  static_cast<std::atomic<std::int64_t>*>(user)->fetch_add(bytes, std::memory_order_relaxed);
+  return true;
+}
+
 // What a top-level Embree geometry ID stands for.
 struct GeometryRecord {
   int instance = -1;
@@ -157,6 +164,8 @@ struct GeometryRecord {
 struct RenderScene::Impl {
   SceneDesc desc;
   ErrorSlot errors;
+  // Before the device: Embree reports frees while the scenes are released.
+  std::atomic<std::int64_t> embreeBytes{0};
   EmbreeDevice device;
   std::vector<EmbreeScene> sharedScenes;  // by mesh index, only for shared meshes
   EmbreeScene top;
@@ -266,6 +275,7 @@ void RenderScene::Impl::build() {
                                              : "cannot create the Embree device (" + why + ")");
   }
   rtcSetDeviceErrorFunction(device.get(), recordError, &errors);
+  rtcSetDeviceMemoryMonitorFunction(device.get(), countEmbreeBytes, &embreeBytes);
 
   const auto newScene = [&] {
     EmbreeScene s(rtcNewScene(device.get()));
@@ -463,7 +473,13 @@ Bounds3f RenderScene::bounds() const {
 }
 
 RenderScene::Stats RenderScene::stats() const {
-  return impl_->stats;
+  Stats s = impl_->stats;
+  s.embreeBytes = impl_->embreeBytes.load(std::memory_order_relaxed);
+  return s;
+}
+
+RTCSceneTy* RenderScene::embreeScene() const {
+  return impl_->top.get();
 }
 
 }  // namespace lensrt

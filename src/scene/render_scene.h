@@ -2,12 +2,16 @@
 // and answers ray queries. Thread-safe for concurrent queries after construction.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 
 #include "core/ray.h"
 #include "core/vec.h"
 #include "scene/scene_desc.h"
+
+// Embree's scene handle (embree3/rtcore.h), named here without its header.
+struct RTCSceneTy;
 
 namespace lensrt {
 
@@ -58,8 +62,15 @@ class RenderScene {
     int bakedGeometries = 0;
     int sharedMeshes = 0;
     int embreeInstances = 0;
+    // Bytes Embree holds for this scene (BVHs and its copies of the
+    // vertices and indices), from its memory monitor.
+    std::int64_t embreeBytes = 0;
   };
   Stats stats() const;
+
+  // The top-level Embree scene, for measuring tools that trace rays with
+  // Embree alone (tools/bench); alpha filters stay attached.
+  RTCSceneTy* embreeScene() const;
 
  private:
   struct Impl;
