@@ -102,7 +102,9 @@ struct ZmxSurface {
   bool infiniteThickness = false;
   double conic = 0.0;
   std::array<double, kEvenAsphereParms> parm{};
-  int parmLine = 0;
+  int parmLine = 0;   // of PARM 1
+  int extraParm = 0;  // a non-zero PARM beyond 8, if any
+  int extraParmLine = 0;
   double semiDiameter = 0.0;
   bool stop = false;
   Medium medium;  // after the surface; air unless GLAS says otherwise
@@ -117,7 +119,22 @@ class ZemaxParser {
   LensPrescription parse(std::string_view bytes) {
     const std::string text = decodeText(bytes, file_);
     for (const TextLine& l : splitLines(text)) readLine(l);
-    return build();
+    LensPrescription lens = build();
+    lens.name = std::filesystem::path(file_).stem().string();
+    lens.file = file_;
+    // Validation numbers surfaces as lensrt does (no object surface, dummies
+    // dropped); the user knows them by their SURF numbers.
+    try {
+      validatePrescription(lens);
+    } catch (const InputError& e) {
+      const std::string prefix = "surface ";
+      const std::size_t colon = e.message().find(": ");
+      if (e.line() > 0 && e.message().starts_with(prefix) && colon != std::string::npos)
+        for (const ZmxSurface& z : surfaces_)
+          if (z.line == e.line()) failSurface(z, e.message().substr(colon + 2), e.line());
+      throw;
+    }
+    return lens;
   }
 
  private:
@@ -140,10 +157,9 @@ class ZemaxParser {
     return *v;
   }
 
-  ZmxSurface& current(std::string_view keyword, int line) {
-    if (surfaces_.empty()) fail(std::string(keyword) + " before the first SURF", line);
-    return surfaces_.back();
-  }
+  // The SURF block a surface keyword belongs to; nullptr before the first
+  // SURF (the system section: skipped like every keyword not read here).
+  ZmxSurface* current() { return surfaces_.empty() ? nullptr : &surfaces_.back(); }
 
   void readLine(const TextLine& l) {
     // Zemax has no comment syntax, and '#' may occur in names: split on
@@ -164,9 +180,10 @@ class ZemaxParser {
     };
     if (key == "MODE") {
       need(1);
-      if (upper(tokens[1]) != "SEQ")
-        fail("non-sequential (MODE " + shown(tokens[1]) + ") files are not supported: only sequential lenses",
-             line);
+      const std::string mode = upper(tokens[1]);
+      if (mode == "NSC")
+        fail("non-sequential (MODE NSC) files are not supported: only sequential lenses", line);
+      if (mode != "SEQ") fail("unknown MODE '" + shown(tokens[1]) + "' (expected SEQ)", line);
     } else if (key == "NAME") {
       description_ = std::string(trim(text.substr(text.find(tokens[0]) + tokens[0].size())));
       for (char& c : description_)
@@ -197,46 +214,50 @@ class ZemaxParser {
       s.number = expected;
       s.line = line;
       surfaces_.push_back(s);
-    } else if (key == "TYPE") {
+    }
+    if (key == "MODE" || key == "NAME" || key == "UNIT" || key == "SURF") return;
+    // Surface keywords; before the first SURF they are not ours to read.
+    ZmxSurface* const block = current();
+    if (!block) return;
+    ZmxSurface& s = *block;
+    if (key == "TYPE") {
       need(1);
-      ZmxSurface& s = current(key, line);
       s.type = upper(tokens[1]);
       s.typeLine = line;
       checkType(s);
     } else if (key == "STOP") {
-      current(key, line).stop = true;
+      s.stop = true;
     } else if (key == "CURV") {
       need(1);
-      current(key, line).curvature = number(tokens[1], "CURV", line);
+      s.curvature = number(tokens[1], "CURV", line);
     } else if (key == "DISZ") {
       need(1);
-      ZmxSurface& s = current(key, line);
       s.infiniteThickness = upper(tokens[1]) == "INFINITY";
       s.thickness = s.infiniteThickness ? 0.0 : number(tokens[1], "DISZ", line);
     } else if (key == "CONI") {
       need(1);
-      current(key, line).conic = number(tokens[1], "CONI", line);
+      s.conic = number(tokens[1], "CONI", line);
     } else if (key == "PARM") {
       need(2);
-      ZmxSurface& s = current(key, line);
       const auto index = parseNumber(tokens[1]);
       if (!index || *index != std::floor(*index) || *index < 0 || *index > 1000)
         fail("PARM needs a parameter number, got '" + shown(tokens[1]) + "'", line);
       const double value = number(tokens[2], "PARM", line);
-      // Other types' parameters are no concern of the surfaces read here;
-      // EVENASPH has eight, and a ninth that is not zero is not an even asphere.
-      if (*index >= 1 && *index <= kEvenAsphereParms)
+      // EVENASPH has eight; other parameter numbers (other types use them)
+      // are kept only to refuse a non-zero one on an even asphere.
+      if (*index >= 1 && *index <= kEvenAsphereParms) {
         s.parm[static_cast<std::size_t>(*index) - 1] = value;
-      else if (value != 0.0 && s.type == "EVENASPH")
-        failSurface(s, "EVENASPH has no PARM " + shown(tokens[1]) + " (PARM 1..8 are the r^2..r^16 terms)",
-                    line);
-      if (value != 0.0) s.parmLine = line;
+        if (*index == 1) s.parmLine = line;
+      } else if (value != 0.0) {
+        s.extraParm = static_cast<int>(*index);
+        s.extraParmLine = line;
+      }
     } else if (key == "DIAM") {
       need(1);
-      current(key, line).semiDiameter = number(tokens[1], "DIAM (semi-diameter)", line);
+      s.semiDiameter = number(tokens[1], "DIAM (semi-diameter)", line);
     } else if (key == "GLAS") {
       need(1);
-      readGlass(current(key, line), tokens, line);
+      readGlass(s, tokens, line);
     }
     // Every other keyword (fields, wavelengths, tolerances, ...) is skipped.
   }
@@ -299,6 +320,10 @@ class ZemaxParser {
     s.medium = z.medium;
     s.conic = z.conic;
     if (z.type == "EVENASPH") {
+      if (z.extraParm != 0)
+        failSurface(
+            z, "EVENASPH has no PARM " + std::to_string(z.extraParm) + " (PARM 1..8 are the r^2..r^16 terms)",
+            z.extraParmLine);
       if (z.parm[0] != 0.0)
         failSurface(z,
                     "EVENASPH PARM 1 (the r^2 term) is not zero: lensrt's even asphere starts at r^4 "

@@ -248,7 +248,16 @@ TEST(Zemax, RefusesWhatItDoesNotSupport) {
       errorOf("SURF 0\n  DISZ INFINITY\nSURF 1\n"),
       "t.zmx: expected an object surface (SURF 0), at least one lens surface and the image surface, got 2 "
       "SURF blocks");
-  EXPECT_EQ(errorOf("CURV 0.1\n"), "t.zmx:1: CURV before the first SURF");
+  // Surface keywords before the first SURF are not read (nor refused).
+  EXPECT_EQ(
+      errorOf("CURV 0.1\nSTOP\n"),
+      "t.zmx: expected an object surface (SURF 0), at least one lens surface and the image surface, got 0 "
+      "SURF blocks");
+  EXPECT_EQ(with("TYPE STANDARD\n  CURV 2", "TYPE EVENASPH\n  PARM 9 1E-3\n  CURV 2"),
+            "t.zmx:18: SURF 2: EVENASPH has no PARM 9 (PARM 1..8 are the r^2..r^16 terms)");
+  // Validation's messages name the SURF too.
+  EXPECT_EQ(with("DIAM 10 1 0 0 1 \"\"\nSURF 3", "DIAM 0 1 0 0 1 \"\"\nSURF 3"),
+            "t.zmx:16: SURF 2: aperture diameter must be positive, got 0 mm");
   EXPECT_EQ(errorOf(zmx(kSinglet + "SURF 4\n  CURV abc\n", 5)),
             "t.zmx:28: expected a finite number for CURV, got 'abc'");
   // Control characters are not echoed.
