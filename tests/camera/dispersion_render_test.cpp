@@ -30,14 +30,17 @@
 namespace lensrt {
 namespace {
 
+LensPrescription dgauss100Prescription() {
+  return loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-100mm.lens");
+}
+
 LensCamera dgauss100(const FilmGeometry& film, double fNumber, double focusM, bool dispersion) {
   Warnings warnings;
   LensCameraParams p;
   p.fNumber = fNumber;
   p.focusMetres = focusM;
   p.dispersion = dispersion;
-  return LensCamera(Transform(), film, loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-100mm.lens"),
-                    p, Exposure{}, warnings);
+  return LensCamera(Transform(), film, dgauss100Prescription(), p, Exposure{}, warnings);
 }
 
 Image render(SceneDesc desc, const Camera& camera, const Environment& env, RenderSettings rs) {
@@ -121,7 +124,7 @@ TEST(DispersionRender, LensWithoutAbbeNumbersStaysAtTheDLine) {
   Warnings warnings;
   LensCameraParams p;
   p.dispersion = true;
-  LensPrescription rx = loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-100mm.lens");
+  LensPrescription rx = dgauss100Prescription();
   for (Surface& s : rx.surfaces) s.medium.vd = 0.0;
   const LensCamera cam(Transform(), FilmGeometry{16, 16, 36.0, 24.0}, rx, p, Exposure{}, warnings);
   EXPECT_FALSE(cam.tracesWavelengths());
@@ -181,14 +184,33 @@ Centroid centroid(const Image& img, const char* name) {
   return {sx / sum, sy / sum};
 }
 
-// A 2 cm white square 100 m away, 16.1 m right of the axis: its image lies at
-// about 3/4 of the half width of a 36x24 mm sensor of 5 um pixels (only a
-// 64x64 crop around it is rendered). At f/8 the blur is small and symmetric,
-// so each channel's centroid is the chief ray's image height averaged over
-// that channel's spectral response: the prediction, from the tracer.
+// The emitter of the lateral-colour tests: a 10 cm white square 100 m away,
+// 17 m right of the axis, seen at f/8 focused on it. Its image lies at about
+// 0.95 of the half width of a 36x24 mm sensor of 5 um pixels; only a 48x48
+// crop around it is rendered, at 256 spp.
+constexpr double distanceM = 100.0, offsetM = 17.0, sizeM = 0.1, fNumber = 8.0;
+const FilmGeometry kEdgeFilm{7200, 4800, 36.0, 24.0};
+
+SceneDesc edgeEmitterScene() {
+  const float h = float(sizeM / 2);
+  return test::rectangleScene(float(offsetM) - h, float(offsetM) + h, -h, h, float(distanceM), 1.0f);
+}
+
+// Renders the crop centred on raster column cx, on the film's middle row.
+Image renderEdgeEmitter(const Camera& camera, int cx) {
+  RenderSettings rs;
+  rs.samplesPerPixel = 256;
+  rs.seed = 1;
+  const int cy = kEdgeFilm.height / 2;
+  rs.region = PixelRegion{cx - 24, cx + 24, cy - 24, cy + 24};
+  return render(edgeEmitterScene(), camera, Environment(), rs);
+}
+
+// At f/8 the blur is small and symmetric, so each channel's centroid is the
+// chief ray's image height averaged over that channel's spectral response:
+// the prediction, from the tracer.
 TEST(DispersionRender, EdgeEmitterSplitsByThePredictedLateralColour) {
-  const FilmGeometry film{7200, 4800, 36.0, 24.0};
-  const double distanceM = 100.0, offsetM = 17.0, sizeM = 0.1, fNumber = 8.0;
+  const FilmGeometry& film = kEdgeFilm;
   const LensCamera on = dgauss100(film, fNumber, distanceM, true);
   const LensCamera off = dgauss100(film, fNumber, distanceM, false);
 
@@ -230,16 +252,9 @@ TEST(DispersionRender, EdgeEmitterSplitsByThePredictedLateralColour) {
   const double predictedPx = xR - xB;
   const double xD = rasterOfUprightSensorPointMm(film, {-spotCentroidX(kWavelengthDNm), 0.0}).x;
 
-  const float h = float(sizeM / 2);
-  const SceneDesc scene =
-      test::rectangleScene(float(offsetM) - h, float(offsetM) + h, -h, h, float(distanceM), 1.0f);
-  RenderSettings rs;
-  rs.samplesPerPixel = 256;
-  rs.seed = 1;
-  const int cx = int(std::lround(xD)), cy = film.height / 2;
-  rs.region = PixelRegion{cx - 24, cx + 24, cy - 24, cy + 24};
-  const Image a = render(scene, on, Environment(), rs);
-  const Image b = render(scene, off, Environment(), rs);
+  const int cx = int(std::lround(xD));
+  const Image a = renderEdgeEmitter(on, cx);
+  const Image b = renderEdgeEmitter(off, cx);
   const Centroid rOn = centroid(a, "R"), bOn = centroid(a, "B");
   const Centroid rOff = centroid(b, "R"), bOff = centroid(b, "B");
   std::printf(
@@ -266,9 +281,8 @@ TEST(DispersionRender, EdgeEmitterSplitsByThePredictedLateralColour) {
 // of the model (opposite in sign to the real lens's here) is checked
 // against this closed form, averaged over the R and B responses.
 TEST(DispersionRender, EdgeEmitterThroughTheThinAndThickLens) {
-  const FilmGeometry film{7200, 4800, 36.0, 24.0};
-  const double distanceM = 100.0, offsetM = 17.0, sizeM = 0.1, fNumber = 8.0;
-  const LensPrescription rx = loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-100mm.lens");
+  const FilmGeometry& film = kEdgeFilm;
+  const LensPrescription rx = dgauss100Prescription();
   const ParaxialData paraxial = computeParaxial(rx);
   ThinLensParams thinParams;
   thinParams.focalLengthMm = paraxial.efl;
@@ -300,22 +314,14 @@ TEST(DispersionRender, EdgeEmitterThroughTheThinAndThickLens) {
   const double thickPredictedPx = rasterOfUprightSensorPointMm(film, {hR / wR, 0.0}).x -
                                   rasterOfUprightSensorPointMm(film, {hB / wB, 0.0}).x;
 
-  const float h = float(sizeM / 2);
-  const SceneDesc scene =
-      test::rectangleScene(float(offsetM) - h, float(offsetM) + h, -h, h, float(distanceM), 1.0f);
   for (const auto& [name, camera, imageDistanceMm, predictedPx] :
        {std::tuple<const char*, const Camera*, double, double>{"thin", &thin, thin.imageDistanceMm(), 0.0},
         std::tuple<const char*, const Camera*, double, double>{"thick", &thick, v, thickPredictedPx}}) {
     SCOPED_TRACE(name);
     // Around the image of the emitter's centre in the upright picture.
     const double uprightX = imageDistanceMm * offsetM / distanceM;
-    const int cx = int(std::lround(rasterOfUprightSensorPointMm(film, {uprightX, 0.0}).x)),
-              cy = film.height / 2;
-    RenderSettings rs;
-    rs.samplesPerPixel = 256;
-    rs.seed = 1;
-    rs.region = PixelRegion{cx - 24, cx + 24, cy - 24, cy + 24};
-    const Image img = render(scene, *camera, Environment(), rs);
+    const int cx = int(std::lround(rasterOfUprightSensorPointMm(film, {uprightX, 0.0}).x));
+    const Image img = renderEdgeEmitter(*camera, cx);
     const Centroid r = centroid(img, "R"), b = centroid(img, "B");
     std::printf("%s lens: R centroid %.3f, B %.3f: R - B = %.3f px, predicted %.3f px\n", name, r.x, b.x,
                 r.x - b.x, predictedPx);
