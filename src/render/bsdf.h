@@ -1,6 +1,7 @@
 // The glTF 2.0 metallic-roughness BRDF (spec appendix B): Lambert diffuse
-// under a GGX specular layer for dielectrics (Schlick Fresnel, f0 = 0.04), GGX
-// with a base-colour Schlick Fresnel for metals, blended by `metallic`.
+// under a GGX specular layer for dielectrics (Schlick Fresnel, f0 = 0.04, or
+// as KHR_materials_ior and KHR_materials_specular set it), GGX with a
+// base-colour Schlick Fresnel for metals, blended by `metallic`.
 // One departure, for energy conservation: the diffuse under the dielectric
 // layer is weighted by the layer's directional albedo on both sides (Kelemen
 // and Szirmay-Kalos) instead of glTF's 1 - F(v.h), which reflects more than it
@@ -16,6 +17,7 @@
 #include <optional>
 
 #include "core/vec.h"
+#include "render/ggx.h"
 
 namespace lensrt {
 
@@ -26,7 +28,17 @@ struct BsdfParams {
   // KHR_materials_specular's strength of the dielectric specular layer: 1 is
   // plain glTF, 0 leaves a pure Lambertian dielectric (used by furnace tests).
   float specularWeight = 1.0f;
+  Rgb specularColor{1, 1, 1};  // KHR_materials_specular's f0 tint
+  float ior = 1.5f;            // KHR_materials_ior: f0 = ((ior - 1) / (ior + 1))^2
+  // Share of the dielectric part that is this opaque BRDF: 1 - transmission
+  // (KHR_materials_transmission's lobe is DielectricBsdf).
+  float opaqueWeight = 1.0f;
 };
+
+// The dielectric layer's Fresnel at normal and grazing incidence (glTF's
+// KHR_materials_specular): f0 = min(f0(ior) * specularColor, 1) * weight,
+// f90 = weight.
+Rgb dielectricF0(const BsdfParams& p);
 
 struct BsdfSample {
   Vec3f wi;
@@ -38,7 +50,7 @@ class Bsdf {
  public:
   // Smallest GGX alpha: smoother surfaces are treated as this (a near mirror)
   // so that D stays finite in float.
-  static constexpr float kMinAlpha = 1e-3f;
+  static constexpr float kMinAlpha = ggx::kMinAlpha;
 
   explicit Bsdf(const BsdfParams& params);
 
@@ -58,10 +70,11 @@ class Bsdf {
 
  private:
   float specularPdf(const Vec3f& wo, const Vec3f& wi) const;
-  float dielectricSpecularAlbedo(float mu) const;
+  Rgb dielectricSpecularAlbedo(float mu) const;
   BsdfParams p_;
   float alpha_;
-  float diffuseNorm_ = 1;  // 1 / (1 - average specular albedo)
+  Rgb f0_;
+  Rgb diffuseNorm_{1, 1, 1};  // 1 / (1 - average specular albedo), per channel
 };
 
 }  // namespace lensrt

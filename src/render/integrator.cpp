@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/bsdf.h"
+#include "render/gltf_bsdf.h"
 
 namespace lensrt {
 namespace {
@@ -35,6 +35,13 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
   Ray ray = cameraRay;
   float prevBsdfPdf = 0;
   Vec3f prevPosition;
+  // Absorption coefficient of the medium the path is in (KHR_materials_volume):
+  // set when it refracts into a volume through a front face, cleared when it
+  // leaves through a back face. Camera paths start in air.
+  Rgb sigma{0, 0, 0};
+  const auto absorbed = [&](float distance) {
+    return Rgb{std::exp(-sigma.x * distance), std::exp(-sigma.y * distance), std::exp(-sigma.z * distance)};
+  };
 
   for (int depth = 0;; ++depth) {
     if (settings_.observer) settings_.observer->traced(depth == 0 ? RayKind::Camera : RayKind::Bounce, ray);
@@ -48,13 +55,14 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
       }
       break;
     }
+    if (maxComponent(sigma) > 0) beta *= absorbed(hit->t);
     const Vec3f wo = -ray.direction;
     const ShadingPoint sp = evaluateMaterial(materials_, *hit, wo);
     if (depth == 0) {
       out.hit = true;
       out.distance = hit->t;
       out.normal = sp.frame.n;
-      out.albedo = sp.bsdf.baseColor;
+      out.albedo = sp.bsdf.baseColor();
     }
     if (maxComponent(sp.emission) > 0) {
       float w = 1.0f;
@@ -65,19 +73,25 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
     }
     if (depth >= settings_.maxDepth) break;
 
-    const Bsdf bsdf(sp.bsdf);
-    const Vec3f woLocal = sp.frame.toLocal(wo);
-    const Vec3f origin = offsetOrigin(hit->position, sp.geometricNormal);
+    const GltfBsdf bsdf(sp.bsdf, sp.frame, sp.coatFrame);
+    const Vec3f& ng = sp.geometricNormal;
+    // A direction is usable when the geometric and the shading normal agree on
+    // its side (otherwise a reflection would pass through the surface or a
+    // refraction stay in front of it).
+    const auto consistent = [&](const Vec3f& wi) { return (dot(wi, ng) > 0) == (dot(wi, sp.frame.n) > 0); };
+    const auto originToward = [&](const Vec3f& wi) {
+      return offsetOrigin(hit->position, dot(wi, ng) > 0 ? ng : -ng);
+    };
     const std::uint32_t dim = kDimFirstBounce + std::uint32_t(depth) * kDimensionsPerBounce;
 
     // Next-event estimation.
     if (!lights_.empty()) {
       const std::optional<LightSample> ls =
           lights_.sample(hit->position, sampler.get1D(dim), sampler.get2D(dim + 1));
-      if (ls && dot(ls->wi, sp.geometricNormal) > 0) {
-        const Vec3f wiLocal = sp.frame.toLocal(ls->wi);
-        const Rgb f = bsdf.eval(woLocal, wiLocal) * std::max(0.0f, wiLocal.z);
+      if (ls && (dot(ls->wi, ng) > 0 || bsdf.transmits()) && consistent(ls->wi)) {
+        const Rgb f = bsdf.eval(wo, ls->wi) * std::abs(dot(ls->wi, sp.frame.n));
         if (maxComponent(f) > 0) {
+          const Vec3f origin = originToward(ls->wi);
           Ray shadow{origin, ls->wi, 0.0f, kInfinityF};
           if (std::isfinite(ls->distance)) {
             // Aim from the offset origin at the light point itself, and stop
@@ -91,22 +105,32 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
 
           if (settings_.observer) settings_.observer->traced(RayKind::Shadow, shadow);
           if (!scene_.occluded(shadow)) {
-            const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(woLocal, wiLocal));
-            out.radiance += beta * f * ls->radiance * (w / ls->pdf);
+            const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(wo, ls->wi));
+            Rgb contribution = beta * f * ls->radiance * (w / ls->pdf);
+            // Inside a medium the light's segment is absorbed too (a light
+            // inside a volume; lights outside are behind its surface).
+            if (maxComponent(sigma) > 0 && std::isfinite(ls->distance))
+              contribution *= absorbed(ls->distance);
+            out.radiance += contribution;
           }
         }
       }
     }
 
     // Continue the path by sampling the BSDF.
-    const std::optional<BsdfSample> bs = bsdf.sample(woLocal, sampler.get1D(dim + 2), sampler.get2D(dim + 3));
+    const std::optional<BsdfSample> bs = bsdf.sample(wo, sampler.get1D(dim + 2), sampler.get2D(dim + 3));
     if (!bs) break;
-    const Vec3f wi = normalize(sp.frame.toWorld(bs->wi));
-    if (dot(wi, sp.geometricNormal) <= 0) break;  // a shading-normal artefact: would go through the surface
-    beta *= bs->f * (bs->wi.z / bs->pdf);
+    const Vec3f wi = bs->wi;
+    if (!consistent(wi)) break;  // a shading-normal artefact
+    const bool transmitted = dot(wi, ng) < 0;
+    beta *= bs->f * (std::abs(dot(wi, sp.frame.n)) / bs->pdf);
     prevBsdfPdf = bs->pdf;
     prevPosition = hit->position;
-    ray = Ray{origin, wi, 0.0f, kInfinityF};
+    ray = Ray{originToward(wi), wi, 0.0f, kInfinityF};
+    if (transmitted) {
+      const Material& m = materials_.material(hit->material);
+      if (!m.thinWalled()) sigma = sp.frontFace ? m.attenuationCoefficient() : Rgb{0, 0, 0};
+    }
 
     if (depth + 1 >= settings_.rouletteDepth) {
       const float survive = std::min(1.0f, maxComponent(beta));

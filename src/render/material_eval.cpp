@@ -71,45 +71,93 @@ Rgb emittedRadiance(const MaterialTable& materials, int index, const Vec2f& uv0,
   return m.emissive * lookup(materials.scene(), m.emissiveTexture, uv0, uv1).xyz();
 }
 
+namespace {
+
+// The normal n (unit, facing the viewer) perturbed by a tangent-space normal
+// map, or n itself when the slot or the tangent frame is missing.
+Vec3f mapNormal(const SceneDesc& scene, const SurfaceHit& hit, const TextureRef& ref, float scale, Vec3f n) {
+  if (!ref.valid()) return n;
+  const bool hasTangent = hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0;
+  const Vec4f tangent4 = hasTangent ? hit.tangent : faceTangent(scene, hit, ref);
+  if (tangent4.x == 0 && tangent4.y == 0 && tangent4.z == 0) return n;
+  const Vec4f t = lookup(scene, ref, hit);
+  const Vec3f local{(2 * t.x - 1) * scale, (2 * t.y - 1) * scale, 2 * t.z - 1};
+  // Gram-Schmidt the interpolated tangent against the shading normal.
+  const Vec3f tangent0 = tangent4.xyz();
+  Vec3f tangent = tangent0 - n * dot(n, tangent0);
+  if (!(lengthSquared(tangent) > 1e-12f)) return n;
+  tangent = normalize(tangent);
+  const Vec3f bitangent = cross(n, tangent) * (tangent4.w < 0 ? -1.0f : 1.0f);
+  const Vec3f mapped = tangent * local.x + bitangent * local.y + n * local.z;
+  if (lengthSquared(mapped) > 0 && isFinite(mapped)) return normalize(mapped);
+  return n;
+}
+
+// A shading normal facing away from the viewer would make the BSDF zero for
+// every light: fall back to the geometric normal there.
+Frame viewerFrame(Vec3f n, const Vec3f& wo, const Vec3f& geometricNormal) {
+  if (dot(n, wo) <= 1e-4f) n = geometricNormal;
+  return Frame::fromNormal(n);
+}
+
+Rgb rgb(const Vec4f& v) {
+  return {v.x, v.y, v.z};
+}
+
+}  // namespace
+
 ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo) {
   const SceneDesc& scene = materials.scene();
   const Material& m = materials.material(hit.material);
   ShadingPoint sp;
 
-  // Shade whichever side the viewer is on: the BRDF is reflective on both sides.
+  // Shade whichever side the viewer is on.
   const bool back = dot(wo, hit.geometricNormal) < 0;
+  sp.frontFace = !back;
   sp.geometricNormal = back ? -hit.geometricNormal : hit.geometricNormal;
-  Vec3f n = back ? -hit.shadingNormal : hit.shadingNormal;
-
-  const bool hasTangent = hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0;
-  const Vec4f tangent4 =
-      !m.normalTexture.valid() || hasTangent ? hit.tangent : faceTangent(scene, hit, m.normalTexture);
-  if (m.normalTexture.valid() && (tangent4.x != 0 || tangent4.y != 0 || tangent4.z != 0)) {
-    const Vec4f t = lookup(scene, m.normalTexture, hit);
-    const Vec3f local{(2 * t.x - 1) * m.normalScale, (2 * t.y - 1) * m.normalScale, 2 * t.z - 1};
-    // Gram-Schmidt the interpolated tangent against the shading normal.
-    const Vec3f tangent0 = tangent4.xyz();
-    Vec3f tangent = tangent0 - n * dot(n, tangent0);
-    if (lengthSquared(tangent) > 1e-12f) {
-      tangent = normalize(tangent);
-      const Vec3f bitangent = cross(n, tangent) * (tangent4.w < 0 ? -1.0f : 1.0f);
-      const Vec3f mapped = tangent * local.x + bitangent * local.y + n * local.z;
-      if (lengthSquared(mapped) > 0 && isFinite(mapped)) n = normalize(mapped);
-    }
-  }
-  // A shading normal facing away from the viewer would make the BRDF zero for
-  // every light: fall back to the geometric normal there.
-  if (dot(n, wo) <= 1e-4f) n = sp.geometricNormal;
-  sp.frame = Frame::fromNormal(n);
+  const Vec3f n = back ? -hit.shadingNormal : hit.shadingNormal;
+  sp.frame = viewerFrame(mapNormal(scene, hit, m.normalTexture, m.normalScale, n), wo, sp.geometricNormal);
 
   // glTF: base colour = factor * texture * COLOR_0 (alpha is the scene's alpha filter's job).
-  const Vec4f base = lookup(scene, m.baseColorTexture, hit);
-  sp.bsdf.baseColor = Rgb{m.baseColor.x * base.x * hit.color.x, m.baseColor.y * base.y * hit.color.y,
-                          m.baseColor.z * base.z * hit.color.z};
+  BsdfParams& base = sp.bsdf.base;
+  const Vec4f bc = lookup(scene, m.baseColorTexture, hit);
+  base.baseColor = Rgb{m.baseColor.x * bc.x * hit.color.x, m.baseColor.y * bc.y * hit.color.y,
+                       m.baseColor.z * bc.z * hit.color.z};
   const Vec4f mr = lookup(scene, m.metallicRoughnessTexture, hit);
-  sp.bsdf.roughness = std::clamp(m.roughness * mr.y, 0.0f, 1.0f);
-  sp.bsdf.metallic = std::clamp(m.metallic * mr.z, 0.0f, 1.0f);
-  sp.bsdf.specularWeight = materials.extra(hit.material).specularWeight;
+  base.roughness = std::clamp(m.roughness * mr.y, 0.0f, 1.0f);
+  base.metallic = std::clamp(m.metallic * mr.z, 0.0f, 1.0f);
+  base.ior = m.ior;
+  base.specularWeight = std::clamp(m.specular * lookup(scene, m.specularTexture, hit).w, 0.0f, 1.0f) *
+                        materials.extra(hit.material).specularWeight;
+  base.specularColor = m.specularColor * rgb(lookup(scene, m.specularColorTexture, hit));
+
+  if (m.transmission > 0) {
+    GltfBsdfParams& b = sp.bsdf;
+    b.transmission = std::clamp(m.transmission * lookup(scene, m.transmissionTexture, hit).x, 0.0f, 1.0f);
+    b.dielectric.thin = m.thinWalled();
+    const float ior = std::max(1.0f, m.ior);
+    b.dielectric.eta = b.dielectric.thin || !back ? ior : 1 / ior;
+    b.dielectric.roughness = base.roughness;
+    b.dielectric.tint = base.baseColor;
+    b.dielectric.specularWeight = base.specularWeight;
+    b.dielectric.specularColor = base.specularColor;
+  }
+  if (m.clearcoat > 0) {
+    sp.bsdf.clearcoat = std::clamp(m.clearcoat * lookup(scene, m.clearcoatTexture, hit).x, 0.0f, 1.0f);
+    sp.bsdf.clearcoatRoughness =
+        std::clamp(m.clearcoatRoughness * lookup(scene, m.clearcoatRoughnessTexture, hit).y, 0.0f, 1.0f);
+    // The coat has its own normal map; without one it follows the geometry,
+    // not the base's normal map.
+    sp.coatFrame = viewerFrame(mapNormal(scene, hit, m.clearcoatNormalTexture, m.clearcoatNormalScale, n), wo,
+                               sp.geometricNormal);
+  } else {
+    sp.coatFrame = sp.frame;
+  }
+  if (maxComponent(m.sheenColor) > 0) {
+    sp.bsdf.sheenColor = m.sheenColor * rgb(lookup(scene, m.sheenColorTexture, hit));
+    sp.bsdf.sheenRoughness =
+        std::clamp(m.sheenRoughness * lookup(scene, m.sheenRoughnessTexture, hit).w, 0.0f, 1.0f);
+  }
   sp.emission = emittedRadiance(materials, hit.material, hit.uv, hit.uv1, dot(wo, hit.geometricNormal));
   return sp;
 }

@@ -6,7 +6,7 @@
 
 #include "core/frame.h"
 #include "core/vec.h"
-#include "render/bsdf.h"
+#include "render/gltf_bsdf.h"
 #include "scene/render_scene.h"
 #include "scene/scene_desc.h"
 
@@ -36,8 +36,10 @@ class MaterialTable {
 
 struct ShadingPoint {
   Frame frame;            // z = (normal-mapped) shading normal, facing the viewer
+  Frame coatFrame;        // z = the clearcoat's normal, facing the viewer
   Vec3f geometricNormal;  // unit, facing the viewer
-  BsdfParams bsdf;
+  bool frontFace = true;  // the viewer is on the side the triangle's winding faces
+  GltfBsdfParams bsdf;
   Rgb emission{0, 0, 0};  // radiance leaving toward the viewer
 };
 

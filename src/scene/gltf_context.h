@@ -29,7 +29,10 @@ struct Context {
 inline bool isSupportedExtension(std::string_view name) {
   return name == "KHR_lights_punctual" || name == "KHR_materials_emissive_strength" ||
          name == "EXT_mesh_gpu_instancing" || name == "KHR_mesh_quantization" ||
-         name == "KHR_texture_transform" || name == "KHR_xmp" || name == "KHR_xmp_json_ld";
+         name == "KHR_texture_transform" || name == "KHR_xmp" || name == "KHR_xmp_json_ld" ||
+         name == "KHR_materials_ior" || name == "KHR_materials_specular" ||
+         name == "KHR_materials_transmission" || name == "KHR_materials_volume" ||
+         name == "KHR_materials_clearcoat" || name == "KHR_materials_sheen";
 }
 
 }  // namespace lensrt::gltf

@@ -8,6 +8,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/constants.h"
 #include "scene/gltf_values.h"
 
 namespace lensrt::gltf {
@@ -300,6 +301,120 @@ void warnTextureInfoExtensions(const Context& ctx, const tinygltf::ExtensionMap&
     if (name != "KHR_texture_transform") ctx.warnUnsupportedExtension(name);
 }
 
+// Members of a material extension, checked as they are read: a value out of
+// its range is ignored with a warning naming material, extension and member.
+class ExtensionReader {
+ public:
+  ExtensionReader(const Context& ctx, TextureLoader& textures, const tinygltf::Value& ext,
+                  std::string material, std::string name)
+      : ctx_(ctx), textures_(textures), ext_(ext), material_(std::move(material)), name_(std::move(name)) {}
+
+  float number(const char* key, float fallback, float lo, float hi) const {
+    const tinygltf::Value* v = member(ext_, key);
+    if (!v) return fallback;
+    if (v->IsNumber()) {
+      const double x = v->GetNumberAsDouble();
+      if (x >= lo && x <= hi) return float(x);
+    }
+    warn(std::string(key) + " is not a number in [" + numberText(lo) + ", " + numberText(hi) + "]");
+    return fallback;
+  }
+  Vec3f colour(const char* key, Vec3f fallback) const {
+    const tinygltf::Value* v = member(ext_, key);
+    if (!v) return fallback;
+    if (v->IsArray() && v->ArrayLen() == 3) {
+      Vec3f c;
+      bool ok = true;
+      for (int i = 0; i < 3; ++i) {
+        const tinygltf::Value& e = v->Get(i);
+        ok = ok && e.IsNumber() && e.GetNumberAsDouble() >= 0 && e.GetNumberAsDouble() <= 1e6;
+        if (ok) c[std::size_t(i)] = float(e.GetNumberAsDouble());
+      }
+      if (ok) return c;
+    }
+    warn(std::string(key) + " is not three non-negative numbers");
+    return fallback;
+  }
+  // A textureInfo member (index, texCoord, its own extensions; `scale` for
+  // normal textures).
+  TextureRef texture(const char* key, bool srgb, float* scale = nullptr) const {
+    const tinygltf::Value* info = member(ext_, key);
+    if (!info) return {};
+    const std::optional<double> index = info->IsObject() ? numberMember(*info, "index") : std::nullopt;
+    if (!index || !isIndex(*index)) {
+      warn(std::string(key) + " has no valid texture index");
+      return {};
+    }
+    int texCoord = 0;
+    if (const std::optional<double> t = numberMember(*info, "texCoord")) {
+      if (isIndex(*t) && *t <= 1e6)
+        texCoord = int(*t);
+      else
+        warn(std::string(key) + ".texCoord is not an index");
+    }
+    if (scale)
+      if (const std::optional<double> sc = numberMember(*info, "scale"); sc && std::isfinite(*sc))
+        *scale = float(*sc);
+    tinygltf::ExtensionMap extensions;
+    if (const tinygltf::Value* e = member(*info, "extensions"); e && e->IsObject())
+      for (const std::string& k : e->Keys()) extensions[k] = e->Get(k);
+    warnTextureInfoExtensions(ctx_, extensions);
+    const std::string slot = name_ + " " + key;
+    return textures_.ref(int(*index), texCoord, extensions, srgb, material_, slot.c_str());
+  }
+
+ private:
+  void warn(const std::string& what) const {
+    ctx_.warnings.warn("material '" + material_ + "': " + name_ + " " + what + "; ignored");
+  }
+  const Context& ctx_;
+  TextureLoader& textures_;
+  const tinygltf::Value& ext_;
+  std::string material_, name_;
+};
+
+// The material extensions on top of glTF's metallic-roughness (the renderer's
+// BSDF says how they combine: render/gltf_bsdf.h).
+void readMaterialExtensions(const Context& ctx, TextureLoader& textures,
+                            const tinygltf::ExtensionMap& extensions, Material& m) {
+  constexpr float kBig = 1e30f;
+  const auto reader = [&](const char* name) -> std::optional<ExtensionReader> {
+    const tinygltf::Value* ext = extension(extensions, name);
+    if (!ext) return std::nullopt;
+    return std::optional<ExtensionReader>(std::in_place, ctx, textures, *ext, m.name, name);
+  };
+  if (const auto r = reader("KHR_materials_ior")) m.ior = r->number("ior", 1.5f, 1.0f, 10.0f);
+  if (const auto r = reader("KHR_materials_specular")) {
+    m.specular = r->number("specularFactor", 1, 0, 1);
+    m.specularTexture = r->texture("specularTexture", false);
+    m.specularColor = r->colour("specularColorFactor", {1, 1, 1});
+    m.specularColorTexture = r->texture("specularColorTexture", true);
+  }
+  if (const auto r = reader("KHR_materials_transmission")) {
+    m.transmission = r->number("transmissionFactor", 0, 0, 1);
+    m.transmissionTexture = r->texture("transmissionTexture", false);
+  }
+  if (const auto r = reader("KHR_materials_volume")) {
+    // The thickness texture serves rasterisers; a path tracer has the geometry.
+    m.thickness = r->number("thicknessFactor", 0, 0, kBig);
+    m.attenuationDistance = r->number("attenuationDistance", kInfinityF, 1e-30f, kInfinityF);
+    m.attenuationColor = r->colour("attenuationColor", {1, 1, 1});
+  }
+  if (const auto r = reader("KHR_materials_clearcoat")) {
+    m.clearcoat = r->number("clearcoatFactor", 0, 0, 1);
+    m.clearcoatTexture = r->texture("clearcoatTexture", false);
+    m.clearcoatRoughness = r->number("clearcoatRoughnessFactor", 0, 0, 1);
+    m.clearcoatRoughnessTexture = r->texture("clearcoatRoughnessTexture", false);
+    m.clearcoatNormalTexture = r->texture("clearcoatNormalTexture", false, &m.clearcoatNormalScale);
+  }
+  if (const auto r = reader("KHR_materials_sheen")) {
+    m.sheenColor = r->colour("sheenColorFactor", {0, 0, 0});
+    m.sheenColorTexture = r->texture("sheenColorTexture", true);
+    m.sheenRoughness = r->number("sheenRoughnessFactor", 0, 0, 1);
+    m.sheenRoughnessTexture = r->texture("sheenRoughnessTexture", false);
+  }
+}
+
 }  // namespace
 
 bool deferImageDecoding(tinygltf::Image* image, int, std::string*, std::string*, int, int,
@@ -349,6 +464,7 @@ void loadMaterials(const Context& ctx, SceneDesc& desc) {
     }
     m.alphaCutoff = finiteOr(gm.alphaCutoff, 0.5f);
     m.doubleSided = gm.doubleSided;
+    readMaterialExtensions(ctx, textures, gm.extensions, m);
     for (const auto& [name, value] : gm.extensions)
       if (!isSupportedExtension(name)) ctx.warnUnsupportedExtension(name);
     for (const tinygltf::ExtensionMap* e :

@@ -1,5 +1,6 @@
 #include "scene/scene_desc.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lensrt {
@@ -25,6 +26,16 @@ Bounds3f SceneDesc::worldBounds() const {
   Bounds3f b;
   for (const MeshInstance& inst : instances) b.extend(inst.worldFromObject(meshBounds[inst.mesh]));
   return b;
+}
+
+}  // namespace lensrt
+
+namespace lensrt {
+
+Vec3f Material::attenuationCoefficient() const {
+  if (!(attenuationDistance > 0) || !std::isfinite(attenuationDistance)) return {0, 0, 0};
+  const auto sigma = [&](float c) { return -std::log(std::clamp(c, 1e-6f, 1.0f)) / attenuationDistance; };
+  return {sigma(attenuationColor.x), sigma(attenuationColor.y), sigma(attenuationColor.z)};
 }
 
 }  // namespace lensrt

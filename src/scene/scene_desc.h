@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +61,39 @@ struct Material {
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
+
+  // KHR_materials_ior and KHR_materials_specular (the dielectric's Fresnel).
+  float ior = 1.5f;
+  float specular = 1.0f;
+  TextureRef specularTexture;  // A
+  Vec3f specularColor{1, 1, 1};
+  TextureRef specularColorTexture;  // RGB, sRGB
+  // KHR_materials_transmission: share of the dielectric that transmits.
+  float transmission = 0.0f;
+  TextureRef transmissionTexture;  // R
+  // KHR_materials_volume: thickness 0 (or no volume) is a thin-walled sheet;
+  // otherwise the mesh bounds a medium absorbing by Beer-Lambert with
+  // sigma = -ln(attenuationColor) / attenuationDistance (the path tracer uses
+  // the real geometry, so the thickness texture is not needed).
+  float thickness = 0.0f;
+  Vec3f attenuationColor{1, 1, 1};
+  float attenuationDistance = std::numeric_limits<float>::infinity();
+  // KHR_materials_clearcoat.
+  float clearcoat = 0.0f;
+  TextureRef clearcoatTexture;  // R
+  float clearcoatRoughness = 0.0f;
+  TextureRef clearcoatRoughnessTexture;  // G
+  TextureRef clearcoatNormalTexture;
+  float clearcoatNormalScale = 1.0f;
+  // KHR_materials_sheen.
+  Vec3f sheenColor{0, 0, 0};
+  TextureRef sheenColorTexture;  // RGB, sRGB
+  float sheenRoughness = 0.0f;
+  TextureRef sheenRoughnessTexture;  // A
+
+  bool thinWalled() const { return !(thickness > 0); }
+  // Absorption coefficient per metre inside a volume (zero: none).
+  Vec3f attenuationCoefficient() const;
   bool isEmissive() const { return emissive.x > 0 || emissive.y > 0 || emissive.z > 0; }
 };
 

@@ -63,9 +63,9 @@ TEST(MaterialEval, FactorsAndNormalMapFollowGltfTangentSpace) {
       EXPECT_NEAR(sp.frame.n.x, k.expectedWorld.x, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
       EXPECT_NEAR(sp.frame.n.y, k.expectedWorld.y, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
       EXPECT_NEAR(sp.frame.n.z, k.expectedWorld.z, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
-      EXPECT_FLOAT_EQ(sp.bsdf.baseColor.y, 0.25f);
-      EXPECT_FLOAT_EQ(sp.bsdf.metallic, 0.3f);
-      EXPECT_FLOAT_EQ(sp.bsdf.roughness, 0.7f);
+      EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.y, 0.25f);
+      EXPECT_FLOAT_EQ(sp.bsdf.base.metallic, 0.3f);
+      EXPECT_FLOAT_EQ(sp.bsdf.base.roughness, 0.7f);
     }
   }
 }
@@ -109,9 +109,9 @@ TEST(MaterialEval, VertexColourMultipliesTheBaseColour) {
   hit.color = {0.5f, 0.5f, 0.25f, 1};
   const ShadingPoint sp = evaluateMaterial(materials, hit, {0, 1, 0});
   // factor (0.5, 0.25, 1) times COLOR_0 (0.5, 0.5, 0.25).
-  EXPECT_FLOAT_EQ(sp.bsdf.baseColor.x, 0.25f);
-  EXPECT_FLOAT_EQ(sp.bsdf.baseColor.y, 0.125f);
-  EXPECT_FLOAT_EQ(sp.bsdf.baseColor.z, 0.25f);
+  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.x, 0.25f);
+  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.y, 0.125f);
+  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.z, 0.25f);
 }
 
 TEST(MaterialEval, TextureSlotsReadTheirUvSetThroughTheirTransform) {
@@ -119,15 +119,15 @@ TEST(MaterialEval, TextureSlotsReadTheirUvSetThroughTheirTransform) {
   hit.uv = {0.25f, 0.5f};
   hit.uv1 = {0.75f, 0.5f};
   TextureRef ref;
-  EXPECT_FLOAT_EQ(evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.baseColor.x,
-                  0.2f);
+  EXPECT_FLOAT_EQ(
+      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor.x, 0.2f);
   ref.texCoord = 1;
-  EXPECT_FLOAT_EQ(evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.baseColor.x,
-                  0.8f);
+  EXPECT_FLOAT_EQ(
+      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor.x, 0.8f);
   // Offset -0.5 on TEXCOORD_1: u = 0.25, texel 0.
   ref.transform = UvTransform::fromOffsetRotationScale({-0.5f, 0}, 0, {1, 1});
-  EXPECT_FLOAT_EQ(evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.baseColor.x,
-                  0.2f);
+  EXPECT_FLOAT_EQ(
+      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor.x, 0.2f);
 }
 
 TEST(MaterialEval, RotatedNormalMapTurnsTheFrameDerivedFromUvs) {

@@ -195,8 +195,8 @@ TEST(GltfMaterial, BlendLoadsWithoutWarning) {
 
 TEST(GltfMaterial, UnsupportedFeaturesEachWarnOnce) {
   GltfBuilder b;
-  b.doc["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_materials_sheen"};
-  b.doc["materials"] = {{{"extensions", {{"KHR_materials_clearcoat", json::object()}}}}};
+  b.doc["extensionsUsed"] = {"KHR_materials_iridescence", "KHR_materials_anisotropy"};
+  b.doc["materials"] = {{{"extensions", {{"KHR_materials_iridescence", json::object()}}}}};
   const int pos = b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
   const int uv = b.floats({0, 0, 1, 0, 0, 1}, "VEC2");
   const int colour = b.floats({1, 0, 0, 0, 1, 0, 0, 0, 1}, "VEC3");
@@ -210,14 +210,104 @@ TEST(GltfMaterial, UnsupportedFeaturesEachWarnOnce) {
   const SceneDesc d = load(b, w);
   EXPECT_TRUE(d.cameras.at(0).orthographic);
   EXPECT_EQ(w.all(), (std::set<std::string>{
-                         "extension KHR_materials_clearcoat is not supported and is ignored",
-                         "extension KHR_materials_sheen is not supported and is ignored",
+                         "extension KHR_materials_anisotropy is not supported and is ignored",
+                         "extension KHR_materials_iridescence is not supported and is ignored",
                          "extra UV sets (TEXCOORD_2 and up) are ignored",
                          "vertex colours beyond COLOR_0 are ignored",
                          "morph targets are not supported: meshes render without them",
                          "orthographic cameras are not supported: camera 'node 0' is kept but renders as a "
                          "perspective camera (yfov 39.6 degrees)",
                      }));
+}
+
+TEST(GltfMaterial, LayerExtensionsLoadTheirFactorsAndTextures) {
+  GltfBuilder b;
+  addPngImage(b);
+  b.doc["extensionsUsed"] = {"KHR_materials_ior",    "KHR_materials_specular",  "KHR_materials_transmission",
+                             "KHR_materials_volume", "KHR_materials_clearcoat", "KHR_materials_sheen",
+                             "KHR_texture_transform"};
+  const json transformed = {
+      {"index", 0},
+      {"texCoord", 0},
+      {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0}}, {"texCoord", 1}}}}}};
+  b.doc["materials"] = {
+      {{"name", "glass"},
+       {"extensions",
+        {{"KHR_materials_ior", {{"ior", 1.33}}},
+         {"KHR_materials_specular",
+          {{"specularFactor", 0.5},
+           {"specularColorFactor", {1, 0.5, 0.25}},
+           {"specularTexture", {{"index", 0}}}}},
+         {"KHR_materials_transmission", {{"transmissionFactor", 0.9}, {"transmissionTexture", transformed}}},
+         {"KHR_materials_volume",
+          {{"thicknessFactor", 0.02}, {"attenuationDistance", 0.5}, {"attenuationColor", {0.5, 1, 1}}}}}}},
+      {{"name", "coated"},
+       {"extensions",
+        {{"KHR_materials_clearcoat",
+          {{"clearcoatFactor", 1},
+           {"clearcoatRoughnessFactor", 0.25},
+           {"clearcoatNormalTexture", {{"index", 0}, {"scale", 0.5}}}}},
+         {"KHR_materials_sheen",
+          {{"sheenColorFactor", {0.5, 0.25, 1}},
+           {"sheenRoughnessFactor", 0.75},
+           {"sheenColorTexture", {{"index", 0}}}}}}}}};
+  b.node({{"mesh", b.square(0)}});
+  b.node({{"mesh", b.square(1)}});
+  Warnings w;
+  const SceneDesc d = load(b, w);
+  EXPECT_TRUE(w.all().empty()) << *w.all().begin();
+  const Material& glass = d.materials.at(0);
+  EXPECT_FLOAT_EQ(glass.ior, 1.33f);
+  EXPECT_FLOAT_EQ(glass.specular, 0.5f);
+  EXPECT_EQ(glass.specularColor, (Vec3f{1, 0.5f, 0.25f}));
+  EXPECT_TRUE(glass.specularTexture.valid());
+  EXPECT_FLOAT_EQ(glass.transmission, 0.9f);
+  ASSERT_TRUE(glass.transmissionTexture.valid());
+  EXPECT_EQ(glass.transmissionTexture.texCoord, 1);  // the transform's texCoord wins
+  EXPECT_EQ(glass.transmissionTexture.uv({0, 0}, {0.25f, 0.5f}), (Vec2f{0.75f, 0.5f}));
+  EXPECT_FALSE(glass.thinWalled());
+  // sigma = -ln(colour) / distance, per metre.
+  EXPECT_NEAR(glass.attenuationCoefficient().x, std::log(2.0) / 0.5, 1e-5);
+  EXPECT_EQ(glass.attenuationCoefficient().y, 0.0f);
+  const Material& coated = d.materials.at(1);
+  EXPECT_FLOAT_EQ(coated.clearcoat, 1);
+  EXPECT_FLOAT_EQ(coated.clearcoatRoughness, 0.25f);
+  EXPECT_TRUE(coated.clearcoatNormalTexture.valid());
+  EXPECT_FLOAT_EQ(coated.clearcoatNormalScale, 0.5f);
+  EXPECT_EQ(coated.sheenColor, (Vec3f{0.5f, 0.25f, 1}));
+  EXPECT_FLOAT_EQ(coated.sheenRoughness, 0.75f);
+  EXPECT_TRUE(coated.sheenColorTexture.valid());
+  EXPECT_TRUE(coated.thinWalled());  // no volume
+  // The sheen colour texture is sRGB, the clearcoat normal map linear: two decodings.
+  EXPECT_NE(coated.sheenColorTexture.texture, coated.clearcoatNormalTexture.texture);
+}
+
+TEST(GltfMaterial, LayerExtensionValuesOutOfRangeWarnAndKeepDefaults) {
+  GltfBuilder b;
+  b.doc["materials"] = {{{"name", "bad"},
+                         {"extensions",
+                          {{"KHR_materials_ior", {{"ior", 0.5}}},
+                           {"KHR_materials_transmission", {{"transmissionFactor", 2}}},
+                           {"KHR_materials_sheen", {{"sheenColorFactor", {1, -1, 0}}}},
+                           {"KHR_materials_clearcoat", {{"clearcoatTexture", {{"index", -3}}}}}}}}};
+  b.node({{"mesh", b.square(0)}});
+  Warnings w;
+  const SceneDesc d = load(b, w);
+  const Material& m = d.materials.at(0);
+  EXPECT_FLOAT_EQ(m.ior, 1.5f);
+  EXPECT_EQ(m.transmission, 0.0f);
+  EXPECT_EQ(m.sheenColor, (Vec3f{0, 0, 0}));
+  EXPECT_FALSE(m.clearcoatTexture.valid());
+  EXPECT_EQ(w.all(),
+            (std::set<std::string>{
+                "material 'bad': KHR_materials_ior ior is not a number in [1, 10]; ignored",
+                "material 'bad': KHR_materials_transmission transmissionFactor is not a number in [0, 1]; "
+                "ignored",
+                "material 'bad': KHR_materials_sheen sheenColorFactor is not three non-negative numbers; "
+                "ignored",
+                "material 'bad': KHR_materials_clearcoat clearcoatTexture has no valid texture index; "
+                "ignored",
+            }));
 }
 
 // --- KHR_lights_punctual: radiometric = photometric / 683 lm/W ---

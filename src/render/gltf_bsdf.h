@@ -1,0 +1,70 @@
+// The whole glTF material as one BSDF: the metallic-roughness BRDF (bsdf.h)
+// with KHR_materials_transmission's dielectric lobe in place of the share
+// `transmission` of its dielectric diffuse (dielectric_bsdf.h), under a sheen
+// layer (sheen_bsdf.h), under a clearcoat (clearcoat_bsdf.h), as the glTF
+// extensions layer them:
+//   f = coat + (1 - c E_c) [sheen + (1 - s E_s) (opaque BRDF + transmission)]
+// where c is the clearcoat factor, s = max(sheenColor), and each E is its
+// lobe's directional albedo taken at the larger of its values for wo and wi
+// (glTF takes it at wo alone; the larger keeps the BSDF reciprocal and every
+// layer's albedo within the share the layer above leaves).
+// Directions are in world space (the lobes have their own frames: the coat's
+// normal may come from its own normal map), unit length, pointing away.
+#pragma once
+
+#include <optional>
+
+#include "core/frame.h"
+#include "core/vec.h"
+#include "render/bsdf.h"
+#include "render/clearcoat_bsdf.h"
+#include "render/dielectric_bsdf.h"
+#include "render/sheen_bsdf.h"
+
+namespace lensrt {
+
+struct GltfBsdfParams {
+  BsdfParams base;
+  float transmission = 0;  // share of the dielectric that transmits
+  DielectricParams dielectric;
+  float clearcoat = 0;
+  float clearcoatRoughness = 0;
+  Rgb sheenColor{0, 0, 0};
+  float sheenRoughness = 0;
+
+  const Rgb& baseColor() const { return base.baseColor; }
+};
+
+class GltfBsdf {
+ public:
+  // shading: z = the (normal-mapped) shading normal on the viewer's side;
+  // coat: z = the clearcoat's normal on the viewer's side.
+  GltfBsdf(const GltfBsdfParams& params, const Frame& shading, const Frame& coat);
+
+  Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
+  float pdf(const Vec3f& wo, const Vec3f& wi) const;
+  // wi of the sample is in world space. Empty when the sample has no density.
+  std::optional<BsdfSample> sample(const Vec3f& wo, float uLobe, const Vec2f& u) const;
+  // True when some light passes to the other side of the surface.
+  bool transmits() const { return transmission_ > 0; }
+
+ private:
+  struct Choice {
+    float coat = 0, sheen = 0, base = 0, trans = 0;  // probabilities, sum 1
+  };
+  Choice choose(const Vec3f& wo) const;
+  // 1 - c E_c and 1 - s E_s for the pair of directions (local to each frame).
+  float coatScale(const Vec3f& woCoat, const Vec3f& wiCoat) const;
+  float sheenScale(const Vec3f& wo, const Vec3f& wi) const;
+
+  Frame shading_, coat_;
+  float transmission_;  // (1 - metallic) * transmission
+  float clearcoat_;
+  float sheenMax_;
+  Bsdf base_;
+  DielectricBsdf dielectric_;
+  ClearcoatBsdf coatLobe_;
+  SheenBsdf sheen_;
+};
+
+}  // namespace lensrt
