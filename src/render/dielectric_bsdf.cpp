@@ -38,6 +38,9 @@ DielectricBsdf::DielectricBsdf(const DielectricParams& p)
     : p_(p), alpha_(ggx::alphaFromRoughness(p.roughness)) {
   p_.specularWeight = std::clamp(p_.specularWeight, 0.0f, 1.0f);
   if (!(p_.eta > 0) || !std::isfinite(p_.eta)) p_.eta = 1;
+  // An index-matched interface does not bend light, and the generalised half
+  // vector of refraction degenerates there: the thin form is exact.
+  if (std::abs(p_.eta - 1) < 1e-3f) p_.thin = true;
 }
 
 float DielectricBsdf::reflectWeight(float cosOH) const {

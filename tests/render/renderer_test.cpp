@@ -127,6 +127,45 @@ TEST(Renderer, AreaLightOverLambertianPlaneMatchesTheFormFactor) {
   }
 }
 
+// The same plane and light with a thin-walled glass sheet of ior 1 between
+// them: it transmits everything straight through, so the closed form still
+// holds, but shadow rays stop at the sheet and the light is reached only by
+// BSDF sampling through it (no leak, nothing counted twice).
+TEST(Renderer, LightThroughAnIndexMatchedSheetKeepsTheFormFactor) {
+  constexpr double kL = 3, kH = 1.5;
+  SceneDesc s;
+  s.sourceFile = "area light behind glass (in code)";
+  s.meshes.push_back(test::makeQuadY(0, 40));
+  s.meshes.push_back(test::makeRectFacingDown(-1, 1, -1, 1, float(kH)));
+  s.meshes.push_back(test::makeQuadY(1.0f, 40));
+  for (int i = 0; i < 3; ++i) {
+    s.meshes[i].material = i;
+    s.instances.push_back({i, Transform()});
+  }
+  s.materials = {test::whiteMatte(), test::whiteMatte(), test::whiteMatte(true)};
+  s.materials[1].baseColor = {0, 0, 0, 1};
+  s.materials[1].emissive = {float(kL), float(kL), float(kL)};
+  s.materials[2].transmission = 1;
+  s.materials[2].ior = 1;
+  s.materials[2].roughness = 0;
+
+  const RenderScene scene(std::move(s));
+  MaterialTable materials(scene.desc());
+  materials.extra(0).specularWeight = 0;
+  const Environment black;
+  const LightSet lights(materials, black, scene.bounds());
+  IntegratorSettings settings;
+  settings.maxDepth = 2;  // plane, sheet, light
+  const Integrator integrator(scene, materials, lights, black, settings);
+  const double expected = kL * 4 * cornerIrradiance(1, 1, kH) / kPi;  // under the centre
+  const Vec3f origin{0.3f, 0.5f, 0.2f};
+  const Ray ray{origin, normalize(Vec3f{0, 0, 0} - origin), 0, kInfinityF};
+  double sum = 0;
+  constexpr int kN = 65536;
+  for (int i = 0; i < kN; ++i) sum += integrator.trace(ray, Sampler(5, 0, std::uint32_t(i))).radiance.y;
+  EXPECT_NEAR(sum / kN, expected, 0.02 * expected);
+}
+
 TEST(Renderer, AovsReportTheFirstHit) {
   // Camera on +Z looking at a unit sphere 4 m away: the centre pixel sees the
   // pole at distance 3 with normal +Z; corners see the background.

@@ -49,6 +49,21 @@ Mesh makeRectFacingDown(float x0, float x1, float z0, float z1, float height) {
   return m;
 }
 
+Mesh makeBox(const Vec3f& lo, const Vec3f& hi) {
+  Mesh m;
+  m.name = "box";
+  for (int i = 0; i < 8; ++i)
+    m.positions.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
+  // Two counter-clockwise triangles per face, seen from outside.
+  m.indices = {0, 2, 1, 1, 2, 3,   // -z
+               4, 5, 6, 5, 7, 6,   // +z
+               0, 1, 4, 1, 5, 4,   // -y
+               2, 6, 3, 3, 6, 7,   // +y
+               0, 4, 2, 2, 4, 6,   // -x
+               1, 3, 5, 3, 7, 5};  // +x
+  return m;
+}
+
 Material whiteMatte(bool doubleSided) {
   Material m;
   m.name = "white";

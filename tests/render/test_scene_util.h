@@ -23,6 +23,9 @@ Mesh makeQuadY(float height, float size);
 // Rectangle [x0,x1] x [z0,z1] at y = height, facing -Y (downward).
 Mesh makeRectFacingDown(float x0, float x1, float z0, float z1, float height);
 
+// Axis-aligned box [lo, hi], outward-facing winding.
+Mesh makeBox(const Vec3f& lo, const Vec3f& hi);
+
 // A material that is a pure Lambertian reflector once its specular weight is
 // zeroed (see renderTestScene's `pureLambert`).
 Material whiteMatte(bool doubleSided = false);
