@@ -23,7 +23,10 @@ DEPARTURES = [
     "diffuse under the specular layer: 1 - F(n.v) instead of lensrt's 1 - albedo",
     "transmission: a Glass BSDF mixed in by the transmission factor",
     "KHR_materials_specular: its specularFactor scales the Fresnel weight; textures and "
-    "specularColorFactor are left out, as are clearcoat and sheen",
+    "specularColorFactor are left out",
+    "clearcoat: a white GGX mixed in by clearcoat * Fresnel(n.v) (lensrt: by its albedo)",
+    "sheen: the importer's Velvet BSDF added on top (lensrt: Charlie sheen, the layer under "
+    "it scaled down by the sheen's albedo)",
 ]
 
 
@@ -126,6 +129,36 @@ def rebuild_material(mat, specular_factor=1.0):
     links.new(dielectric.outputs["Shader"], surface.inputs[1])
     links.new(metal.outputs["BSDF"], surface.inputs[2])
     result = surface.outputs["Shader"]
+
+    # KHR_materials_clearcoat (the importer fills the Principled clearcoat inputs):
+    # a white GGX of ior 1.5 over the rest, mixed in by clearcoat * Fresnel(n.v),
+    # glTF's own layering formula.
+    coat_weight = inp["Clearcoat"]
+    if coat_weight.is_linked or coat_weight.default_value > 0:
+        coat = node("ShaderNodeBsdfGlossy", distribution="GGX")
+        coat.inputs["Color"].default_value = (1, 1, 1, 1)
+        linked_or_value(tree, inp["Clearcoat Roughness"], coat.inputs["Roughness"])
+        coat_fresnel = node("ShaderNodeFresnel")
+        coat_fresnel.inputs["IOR"].default_value = 1.5
+        if inp["Clearcoat Normal"].is_linked:
+            for shader in (coat, coat_fresnel):
+                links.new(inp["Clearcoat Normal"].links[0].from_socket, shader.inputs["Normal"])
+        fac = node("ShaderNodeMath", operation="MULTIPLY")
+        linked_or_value(tree, coat_weight, fac.inputs[0])
+        links.new(coat_fresnel.outputs["Fac"], fac.inputs[1])
+        coated = node("ShaderNodeMixShader")
+        links.new(fac.outputs["Value"], coated.inputs["Fac"])
+        links.new(result, coated.inputs[1])
+        links.new(coat.outputs["BSDF"], coated.inputs[2])
+        result = coated.outputs["Shader"]
+    # KHR_materials_sheen: the importer adds a Velvet BSDF (Cycles has no Charlie
+    # sheen) to the Principled's output; keep it, added on top.
+    velvet = next((n for n in tree.nodes if n.type == "BSDF_VELVET"), None)
+    if velvet is not None:
+        with_sheen = node("ShaderNodeAddShader")
+        links.new(result, with_sheen.inputs[0])
+        links.new(velvet.outputs["BSDF"], with_sheen.inputs[1])
+        result = with_sheen.outputs["Shader"]
 
     emission = node("ShaderNodeEmission")
     linked_or_value(tree, inp["Emission"], emission.inputs["Color"])
