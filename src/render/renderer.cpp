@@ -43,6 +43,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
     std::vector<CameraSample> samples(batch);
     std::vector<std::optional<CameraRay>> rays(batch);
     std::vector<Rgb> spectralWeights(spectral ? batch : 0);
+    std::vector<Sampler> samplers;
+    samplers.reserve(batch);
     for (int y = y0; y < y1; ++y) {
       for (std::uint64_t first = 0; first < rowSamples; first += batch) {
         const std::size_t n = std::size_t(std::min<std::uint64_t>(batch, rowSamples - first));
@@ -50,9 +52,10 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           return std::uint64_t(y) * std::uint64_t(film.width) + std::uint64_t(x0) + j / spp;
         };
         const auto sampleOf = [&](std::uint64_t j) { return firstSample + std::uint32_t(j % spp); };
+        samplers.clear();
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
-          const Sampler sampler(settings.seed, pixelOf(j), sampleOf(j));
+          const Sampler& sampler = samplers.emplace_back(settings.seed, pixelOf(j), sampleOf(j));
           const Vec2f offset = sampler.get2D(kDimFilm);
           CameraSample& cs = samples[k];
           cs.film = {float(x0 + int(j / spp)) + offset.x, float(y) + offset.y};
@@ -76,7 +79,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             acc.addBlocked();
             ++tileBlocked;
           } else {
-            PathSample path = integrator.trace(cr->ray, Sampler(settings.seed, pixelOf(j), sampleOf(j)));
+            PathSample path = integrator.trace(cr->ray, samplers[k]);
             if (spectral) path.radiance = path.radiance * spectralWeights[k];
             acc.add(path, cr->weight);
           }

@@ -6,11 +6,19 @@ namespace lensrt {
 namespace {
 
 std::uint32_t reverseBits(std::uint32_t x) {
+#if defined(__clang__)
+  return __builtin_bitreverse32(x);
+#else
+#if defined(__GNUC__)
+  x = __builtin_bswap32(x);  // the bytes in reverse order, then the bits within each byte
+#else
+  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
+  x = (x >> 16) | (x << 16);
+#endif
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-  return (x >> 16) | (x << 16);
+  return ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+#endif
 }
 
 // Laine-Karras style permutation: each bit only depends on lower bits, so after
@@ -25,35 +33,40 @@ std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
   return x;
 }
 
-std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
-  return reverseBits(laineKarras(reverseBits(x), seed));
-}
+// A nested uniform (Owen) scramble of x is reverseBits(laineKarras(reverseBits(x), seed)).
+// The sampler keeps the shuffled sample index in the bit-reversed domain, where its
+// scramble is laineKarras alone: the sample index is reversed once per Sampler,
+// and the first Sobol dimension of the shuffled index (van der Corput: the index
+// reversed) is that reversed index itself; only what enters a point's scramble and
+// the values handed out are reversed. Three reversals per 2D point instead of seven.
 
-// The first two Sobol dimensions: van der Corput (identity matrix, bit reversed)
-// and the Pascal-matrix dimension.
-std::uint32_t sobol0(std::uint32_t index) {
-  return reverseBits(index);
-}
-// The generator matrix applied a byte at a time: table[k][b] is the XOR of the
-// direction numbers selected by byte b of the index at byte position k (the
-// shuffled indices use all 32 bits, so a bit loop would run 32 times).
+// The second Sobol dimension (the Pascal matrix) from and to the reversed domain:
+// reverseBits(sobol1(reverseBits(r))), a linear map applied a byte of r at a time:
+// table[k][b] is the XOR of the columns that byte b of r at byte position k selects.
 using SobolTable = std::array<std::array<std::uint32_t, 256>, 4>;
-constexpr SobolTable makeSobol1Table() {
+constexpr std::uint32_t reverseBitsConstexpr(std::uint32_t x) {
+  std::uint32_t r = 0;
+  for (int i = 0; i < 32; ++i) r |= ((x >> i) & 1u) << (31 - i);
+  return r;
+}
+constexpr SobolTable makeReversedSobol1Table() {
+  // direction[i]: the generator matrix's column for bit i of the index.
   std::array<std::uint32_t, 32> direction{};
   std::uint32_t v = 1u << 31;
   for (int i = 0; i < 32; ++i, v ^= v >> 1) direction[i] = v;
   SobolTable t{};
+  // Bit j of r is bit 31 - j of the index; the result is reversed too.
   for (int k = 0; k < 4; ++k)
     for (int b = 0; b < 256; ++b)
       for (int i = 0; i < 8; ++i)
-        if (b & (1 << i)) t[k][b] ^= direction[8 * k + i];
+        if (b & (1 << i)) t[k][b] ^= reverseBitsConstexpr(direction[31 - (8 * k + i)]);
   return t;
 }
-constexpr SobolTable kSobol1 = makeSobol1Table();
+constexpr SobolTable kReversedSobol1 = makeReversedSobol1Table();
 
-std::uint32_t sobol1(std::uint32_t index) {
-  return kSobol1[0][index & 0xff] ^ kSobol1[1][(index >> 8) & 0xff] ^ kSobol1[2][(index >> 16) & 0xff] ^
-         kSobol1[3][index >> 24];
+std::uint32_t reversedSobol1(std::uint32_t r) {
+  return kReversedSobol1[0][r & 0xff] ^ kReversedSobol1[1][(r >> 8) & 0xff] ^
+         kReversedSobol1[2][(r >> 16) & 0xff] ^ kReversedSobol1[3][r >> 24];
 }
 
 float toUnitFloat(std::uint32_t x) {
@@ -79,20 +92,23 @@ std::uint32_t hash64(std::uint64_t v) {
 }
 
 Sampler::Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sampleIndex)
-    : pixelSeed_(hashCombine(hash64(seed), hash64(pixelIndex))), sampleIndex_(sampleIndex) {}
+    : pixelSeed_(hashCombine(hash64(seed), hash64(pixelIndex))), reversedIndex_(reverseBits(sampleIndex)) {}
 
+// Per dimension the sample index is shuffled by an Owen scramble (padding), then
+// the point of the shuffled index is Owen scrambled per coordinate (see above):
+// r is the shuffled index reversed, which is also the point's x before its scramble.
 float Sampler::get1D(std::uint32_t dimension) const {
   // The x coordinate of get2D(dimension), without computing y.
   const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);
-  const std::uint32_t index = owenScramble(sampleIndex_, hashCombine(dimSeed, 0x51ed270bu));
-  return toUnitFloat(owenScramble(sobol0(index), hashCombine(dimSeed, 0x68bc21ebu)));
+  const std::uint32_t r = laineKarras(reversedIndex_, hashCombine(dimSeed, 0x51ed270bu));
+  return toUnitFloat(reverseBits(laineKarras(reverseBits(r), hashCombine(dimSeed, 0x68bc21ebu))));
 }
 
 Vec2f Sampler::get2D(std::uint32_t dimension) const {
   const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);
-  const std::uint32_t index = owenScramble(sampleIndex_, hashCombine(dimSeed, 0x51ed270bu));
-  const std::uint32_t x = owenScramble(sobol0(index), hashCombine(dimSeed, 0x68bc21ebu));
-  const std::uint32_t y = owenScramble(sobol1(index), hashCombine(dimSeed, 0x02e5be93u));
+  const std::uint32_t r = laineKarras(reversedIndex_, hashCombine(dimSeed, 0x51ed270bu));
+  const std::uint32_t x = reverseBits(laineKarras(reverseBits(r), hashCombine(dimSeed, 0x68bc21ebu)));
+  const std::uint32_t y = reverseBits(laineKarras(reversedSobol1(r), hashCombine(dimSeed, 0x02e5be93u)));
   return {toUnitFloat(x), toUnitFloat(y)};
 }
 

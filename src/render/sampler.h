@@ -38,7 +38,7 @@ class Sampler {
 
  private:
   std::uint32_t pixelSeed_;
-  std::uint32_t sampleIndex_;
+  std::uint32_t reversedIndex_;  // the sample index, bit reversed
 };
 
 }  // namespace lensrt

@@ -2,11 +2,60 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <vector>
 
 namespace lensrt {
 namespace {
+
+// The sampler as its header defines it, the slow and plain way: bit loops, the
+// Owen scramble as reverse-permute-reverse, Sobol's first two dimensions from
+// their generator matrices. The sampler computes the same in the bit-reversed
+// domain; it must give the same bits.
+std::uint32_t plainReverse(std::uint32_t x) {
+  std::uint32_t r = 0;
+  for (int i = 0; i < 32; ++i) r |= ((x >> i) & 1u) << (31 - i);
+  return r;
+}
+std::uint32_t plainOwen(std::uint32_t x, std::uint32_t seed) {
+  x = plainReverse(x);
+  x ^= x * 0x3d20adeau;
+  x += seed;
+  x *= (seed >> 16) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return plainReverse(x);
+}
+std::uint32_t plainSobol(int dimension, std::uint32_t index) {
+  std::uint32_t v = 1u << 31, out = 0;
+  for (int i = 0; i < 32; ++i) {
+    if ((index >> i) & 1u) out ^= dimension == 0 ? (1u << (31 - i)) : v;
+    v ^= v >> 1;
+  }
+  return out;
+}
+Vec2f plainGet2D(std::uint64_t seed, std::uint64_t pixel, std::uint32_t sample, std::uint32_t dimension) {
+  const std::uint32_t dimSeed = hashCombine(hashCombine(hash64(seed), hash64(pixel)), dimension);
+  const std::uint32_t index = plainOwen(sample, hashCombine(dimSeed, 0x51ed270bu));
+  const std::uint32_t x = plainOwen(plainSobol(0, index), hashCombine(dimSeed, 0x68bc21ebu));
+  const std::uint32_t y = plainOwen(plainSobol(1, index), hashCombine(dimSeed, 0x02e5be93u));
+  return {float(x >> 8) * 0x1p-24f, float(y >> 8) * 0x1p-24f};
+}
+
+TEST(Sampler, IsOwenScrambledSobolPaddedByAnOwenShuffle) {
+  std::uint32_t state = 1;
+  const auto next = [&] { return state = hashCombine(state, 0x1234567u); };
+  for (int n = 0; n < 20000; ++n) {
+    const std::uint64_t seed = n % 3 == 0 ? 0 : next(), pixel = next() % 100000;
+    // Small indices (the common case) and all 32 bits.
+    const std::uint32_t sample = n % 2 ? next() : next() % 1024, dimension = next() % 64;
+    const Sampler s(seed, pixel, sample);
+    const Vec2f want = plainGet2D(seed, pixel, sample, dimension);
+    ASSERT_EQ(s.get2D(dimension), want) << "seed " << seed << " pixel " << pixel << " sample " << sample;
+    ASSERT_EQ(s.get1D(dimension), want.x);
+  }
+}
 
 TEST(Sampler, ValuesAreInTheUnitInterval) {
   for (std::uint32_t i = 0; i < 4096; ++i) {
