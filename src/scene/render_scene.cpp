@@ -157,6 +157,10 @@ struct GeometryRecord {
   int instance = -1;
   int mesh = -1;
   bool mirrored = false;
+  // A baked mesh's world-space vertices (x, y, z per vertex) as Embree holds
+  // them: the very floats hitAt would compute with the instance transform.
+  // Null for an Embree instance (its vertices are in object space).
+  const float* worldVertices = nullptr;
 };
 
 }  // namespace
@@ -170,6 +174,7 @@ struct RenderScene::Impl {
   std::vector<EmbreeScene> sharedScenes;  // by mesh index, only for shared meshes
   EmbreeScene top;
   std::vector<AlphaMask> masks;  // by mesh index; stable, Embree points into it
+  bool blendMasks = false;       // some mask is AlphaMode::Blend: its filter needs the ray's key
   std::vector<GeometryRecord> records;
   Stats stats;
 
@@ -181,7 +186,8 @@ struct RenderScene::Impl {
 
   void validate() const;
   void buildMasks();
-  EmbreeGeometry newTriangles(int meshIndex, const Transform* bake);
+  // `vertices` receives Embree's vertex buffer (world space when baked).
+  EmbreeGeometry newTriangles(int meshIndex, const Transform* bake, const float** vertices);
   void build();
   SurfaceHit hitAt(const GeometryRecord& rec, unsigned prim, float u, float v, float t,
                    const Vec3f& dir) const;
@@ -229,16 +235,19 @@ void RenderScene::Impl::buildMasks() {
     const Material& mat = desc.materials[m.material];
     if (mat.alphaMode == AlphaMode::Opaque) continue;
     masks[i] = {&desc, &m, &mat};
+    if (mat.alphaMode == AlphaMode::Blend) blendMasks = true;
   }
 }
 
-EmbreeGeometry RenderScene::Impl::newTriangles(int meshIndex, const Transform* bake) {
+EmbreeGeometry RenderScene::Impl::newTriangles(int meshIndex, const Transform* bake,
+                                               const float** vertexBuffer) {
   const Mesh& m = desc.meshes[meshIndex];
   EmbreeGeometry geom(rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE));
   check("create a triangle geometry");
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
       geom.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.positions.size()));
   check("allocate a vertex buffer");
+  *vertexBuffer = vertices;
   for (std::size_t i = 0; i < m.positions.size(); ++i) {
     const Vec3f p = bake ? bake->point(m.positions[i]) : m.positions[i];
     vertices[3 * i] = p.x;
@@ -317,7 +326,8 @@ void RenderScene::Impl::build() {
   for (std::size_t i = 0; i < desc.meshes.size(); ++i) {
     if (uses[i] < 2) continue;
     sharedScenes[i] = newScene();
-    EmbreeGeometry geom = newTriangles(static_cast<int>(i), nullptr);
+    const float* objectVertices = nullptr;
+    EmbreeGeometry geom = newTriangles(static_cast<int>(i), nullptr, &objectVertices);
     rtcAttachGeometryByID(sharedScenes[i].get(), geom.get(), 0);
     check("attach a shared mesh");
     rtcCommitScene(sharedScenes[i].get());
@@ -330,8 +340,9 @@ void RenderScene::Impl::build() {
     const MeshInstance& inst = desc.instances[i];
     if (placement[i] == Placement::Skip) continue;
     EmbreeGeometry geom;
+    const float* worldVertices = nullptr;
     if (placement[i] == Placement::Bake) {
-      geom = newTriangles(inst.mesh, &inst.worldFromObject);
+      geom = newTriangles(inst.mesh, &inst.worldFromObject, &worldVertices);
       ++stats.bakedGeometries;
     } else {
       geom.reset(rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_INSTANCE));
@@ -349,7 +360,8 @@ void RenderScene::Impl::build() {
     const auto id = static_cast<unsigned>(records.size());
     rtcAttachGeometryByID(top.get(), geom.get(), id);
     check("attach a geometry");
-    records.push_back({static_cast<int>(i), inst.mesh, inst.worldFromObject.determinant3x3() < 0.0});
+    records.push_back(
+        {static_cast<int>(i), inst.mesh, inst.worldFromObject.determinant3x3() < 0.0, worldVertices});
   }
   rtcCommitScene(top.get());
   check("build the scene");
@@ -370,9 +382,12 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   hit.primitive = prim;
   hit.instance = rec.instance;
   hit.material = m.material;
-  const Vec3f p0 = xf.point(m.positions[idx[0]]);
-  const Vec3f p1 = xf.point(m.positions[idx[1]]);
-  const Vec3f p2 = xf.point(m.positions[idx[2]]);
+  const auto world = [&](std::uint32_t i) {
+    if (!rec.worldVertices) return xf.point(m.positions[i]);
+    const float* p = rec.worldVertices + 3 * static_cast<std::size_t>(i);
+    return Vec3f{p[0], p[1], p[2]};
+  };
+  const Vec3f p0 = world(idx[0]), p1 = world(idx[1]), p2 = world(idx[2]);
   hit.position = p0 * w + p1 * u + p2 * v;
   // glTF: counter-clockwise is the front unless the world transform mirrors.
   Vec3f ng = cross(p1 - p0, p2 - p0);
@@ -415,7 +430,7 @@ RenderScene::~RenderScene() = default;
 std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
   QueryContext context;
   rtcInitIntersectContext(&context.embree);
-  context.rayKey = rayKey(ray);
+  context.rayKey = impl_->blendMasks ? rayKey(ray) : 0;  // only stochastic transparency reads it
   RTCRayHit rh{};
   rh.ray.org_x = ray.origin.x;
   rh.ray.org_y = ray.origin.y;
@@ -443,7 +458,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
 bool RenderScene::occluded(const Ray& ray) const {
   QueryContext context;
   rtcInitIntersectContext(&context.embree);
-  context.rayKey = rayKey(ray);
+  context.rayKey = impl_->blendMasks ? rayKey(ray) : 0;  // only stochastic transparency reads it
   RTCRay r{};
   r.org_x = ray.origin.x;
   r.org_y = ray.origin.y;
