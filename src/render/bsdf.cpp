@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/constants.h"
 
@@ -24,13 +25,32 @@ Rgb Bsdf::dielectricSpecularAlbedo(float mu) const {
   return ggx::specularAlbedo(alpha_, mu).with(f0_, p_.specularWeight);
 }
 
-Bsdf::Bsdf(const BsdfParams& params)
-    : p_(params), alpha_(ggx::alphaFromRoughness(params.roughness)), f0_(dielectricF0(params)) {
+Bsdf::Bsdf(const BsdfParams& params) : Bsdf(params, std::numeric_limits<float>::quiet_NaN()) {}
+
+Bsdf::Bsdf(const BsdfParams& params, float muO)
+    : p_(params), alpha_(ggx::alphaFromRoughness(params.roughness)), f0_(dielectricF0(params)), muO_(muO) {
   p_.metallic = std::clamp(p_.metallic, 0.0f, 1.0f);
   p_.opaqueWeight = std::clamp(p_.opaqueWeight, 0.0f, 1.0f);
   p_.specularWeight = std::clamp(p_.specularWeight, 0.0f, 1.0f);
   const Rgb average = ggx::averageSpecularAlbedo(alpha_).with(f0_, p_.specularWeight);
   for (int c = 0; c < 3; ++c) diffuseNorm_[c] = 1.0f / std::max(1e-4f, 1 - average[c]);
+  if (muO_ == muO_) {  // not NaN
+    albedoO_ = p_.specularWeight > 0 ? dielectricSpecularAlbedo(muO_) : Rgb{0, 0, 0};
+    lambdaO_ = ggx::lambda(alpha_, Vec3f{0, 0, muO_});
+    specularProbabilityO_ = computeSpecularProbability(muO_);
+  }
+}
+
+// Without a specular layer (KHR_materials_specular 0) f0 and f90 are 0 and
+// so is the albedo, whatever the table says.
+Rgb Bsdf::specularAlbedoAt(float mu) const {
+  if (mu == muO_) return albedoO_;
+  return p_.specularWeight > 0 ? dielectricSpecularAlbedo(mu) : Rgb{0, 0, 0};
+}
+
+// Lambda depends on the cosine alone.
+float Bsdf::lambdaAt(const Vec3f& w) const {
+  return w.z == muO_ ? lambdaO_ : ggx::lambda(alpha_, w);
 }
 
 float Bsdf::ggxD(const Vec3f& h) const {
@@ -50,25 +70,30 @@ Rgb Bsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
   const float vDotH = std::max(0.0f, dot(wo, h));
   const float fw = ggx::schlickWeight(vDotH);
   // Height-correlated Smith G2 over the usual 4 cos cos denominator.
-  const float spec = ggxD(h) * ggx::G2(alpha_, wo, wi) / (4 * wo.z * wi.z);
+  const float g2 = 1.0f / (1.0f + lambdaAt(wo) + lambdaAt(wi));
+  const float spec = ggxD(h) * g2 / (4 * wo.z * wi.z);
   const Rgb one{1, 1, 1};
   const Rgb fDielectric = f0_ + (one * p_.specularWeight - f0_) * fw;
   const Rgb fMetal = p_.baseColor + (one - p_.baseColor) * fw;
   Rgb diffuse = one;
   if (p_.specularWeight > 0)
-    diffuse = (one - dielectricSpecularAlbedo(wo.z)) * (one - dielectricSpecularAlbedo(wi.z)) * diffuseNorm_;
+    diffuse = (one - specularAlbedoAt(wo.z)) * (one - specularAlbedoAt(wi.z)) * diffuseNorm_;
   const Rgb dielectric = p_.baseColor * diffuse * kInvPiF + fDielectric * spec;
   return dielectric * ((1 - p_.metallic) * p_.opaqueWeight) + fMetal * (spec * p_.metallic);
 }
 
 float Bsdf::specularProbability(const Vec3f& wo) const {
+  return wo.z == muO_ ? specularProbabilityO_ : computeSpecularProbability(wo.z);
+}
+
+float Bsdf::computeSpecularProbability(float mu) const {
   // Lobe weights from the Fresnel at normal-ish incidence estimated with wo.z.
-  const float fw = ggx::schlickWeight(std::max(0.0f, wo.z));
+  const float fw = ggx::schlickWeight(std::max(0.0f, mu));
   const Rgb one{1, 1, 1};
   const float fd = luminance(f0_ + (one * p_.specularWeight - f0_) * fw);
   const float dielectric = (1 - p_.metallic) * p_.opaqueWeight;
   const float spec = dielectric * fd + p_.metallic * luminance(p_.baseColor + (one - p_.baseColor) * fw);
-  const float diffuse = dielectric * luminance((one - dielectricSpecularAlbedo(wo.z)) * p_.baseColor);
+  const float diffuse = dielectric * luminance((one - specularAlbedoAt(mu)) * p_.baseColor);
   if (spec + diffuse <= 0) return 0.5f;
   return spec / (spec + diffuse);
 }
@@ -79,7 +104,7 @@ float Bsdf::specularPdf(const Vec3f& wo, const Vec3f& wi) const {
   if (hl == 0) return 0;
   h = h / hl;
   // Visible-normal pdf times the reflection Jacobian 1 / (4 wo.h).
-  const float g1 = ggx::G1(alpha_, wo);
+  const float g1 = 1.0f / (1.0f + lambdaAt(wo));
   return g1 * ggxD(h) / (4 * wo.z);
 }
 

@@ -53,6 +53,12 @@ class Bsdf {
   static constexpr float kMinAlpha = ggx::kMinAlpha;
 
   explicit Bsdf(const BsdfParams& params);
+  // The same BSDF prepared for outgoing directions with wo.z == muO (the
+  // renderer's view of a hit, seen from one direction): what depends on wo
+  // alone (the specular albedo under the diffuse, Smith's Lambda, the lobe
+  // choice) is computed here once instead of in every eval, pdf and sample.
+  // Any other wo still works; the values are the same bits either way.
+  Bsdf(const BsdfParams& params, float muO);
 
   Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
@@ -71,10 +77,19 @@ class Bsdf {
  private:
   float specularPdf(const Vec3f& wo, const Vec3f& wi) const;
   Rgb dielectricSpecularAlbedo(float mu) const;
+  // The wo-only quantities, from the prepared values when mu is muO.
+  Rgb specularAlbedoAt(float mu) const;
+  float lambdaAt(const Vec3f& w) const;
+  float computeSpecularProbability(float mu) const;
   BsdfParams p_;
   float alpha_;
   Rgb f0_;
   Rgb diffuseNorm_{1, 1, 1};  // 1 / (1 - average specular albedo), per channel
+  // Prepared for wo.z == muO_ (NaN: nothing prepared, never equal).
+  float muO_;
+  Rgb albedoO_{0, 0, 0};
+  float lambdaO_ = 0;
+  float specularProbabilityO_ = 0;
 };
 
 }  // namespace lensrt

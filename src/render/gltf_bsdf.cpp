@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lensrt {
 namespace {
@@ -15,38 +16,49 @@ BsdfParams opaquePart(const GltfBsdfParams& p) {
 }  // namespace
 
 GltfBsdf::GltfBsdf(const GltfBsdfParams& p, const Frame& shading, const Frame& coat)
+    : GltfBsdf(p, shading, coat, Vec3f{1, 1, 1} * std::numeric_limits<float>::quiet_NaN()) {}
+
+GltfBsdf::GltfBsdf(const GltfBsdfParams& p, const Frame& shading, const Frame& coat, const Vec3f& wo)
     : shading_(shading),
       coat_(coat),
       transmission_((1 - std::clamp(p.base.metallic, 0.0f, 1.0f)) * std::clamp(p.transmission, 0.0f, 1.0f)),
       clearcoat_(std::clamp(p.clearcoat, 0.0f, 1.0f)),
       sheenMax_(std::clamp(maxComponent(p.sheenColor), 0.0f, 1.0f)),
-      base_(opaquePart(p)),
-      dielectric_(p.dielectric),
-      coatLobe_(p.clearcoatRoughness),
-      sheen_(p.sheenColor, p.sheenRoughness) {}
+      wo_(wo),
+      woLocal_(shading.toLocal(wo)),
+      woCoat_(coat.toLocal(wo)),
+      base_(opaquePart(p), woLocal_.z) {
+  if (transmission_ > 0) dielectric_.emplace(p.dielectric);
+  if (clearcoat_ > 0) coatLobe_.emplace(p.clearcoatRoughness);
+  if (sheenMax_ > 0) sheen_.emplace(p.sheenColor, p.sheenRoughness);
+  choice_ = computeChoice(woLocal_, woCoat_);
+}
 
 float GltfBsdf::coatScale(const Vec3f& woCoat, const Vec3f& wiCoat) const {
   if (clearcoat_ <= 0) return 1;
-  const float e = std::max(coatLobe_.albedo(std::abs(woCoat.z)), coatLobe_.albedo(std::abs(wiCoat.z)));
+  const float e = std::max(coatLobe_->albedo(std::abs(woCoat.z)), coatLobe_->albedo(std::abs(wiCoat.z)));
   return 1 - clearcoat_ * e;
 }
 
 float GltfBsdf::sheenScale(const Vec3f& wo, const Vec3f& wi) const {
   if (sheenMax_ <= 0) return 1;
-  const float e = std::max(sheen_.albedo(std::abs(wo.z)), sheen_.albedo(std::abs(wi.z)));
+  const float e = std::max(sheen_->albedo(std::abs(wo.z)), sheen_->albedo(std::abs(wi.z)));
   return std::max(0.0f, 1 - sheenMax_ * e);
 }
 
 GltfBsdf::Choice GltfBsdf::choose(const Vec3f& wo) const {
+  return wo == wo_ ? choice_ : computeChoice(shading_.toLocal(wo), coat_.toLocal(wo));
+}
+
+GltfBsdf::Choice GltfBsdf::computeChoice(const Vec3f& woLocal, const Vec3f& woCoat) const {
   Choice c;
-  const Vec3f woCoat = coat_.toLocal(wo), woLocal = shading_.toLocal(wo);
   float rest = 1;
   if (clearcoat_ > 0 && woCoat.z > 0) {
-    c.coat = clearcoat_ * coatLobe_.albedo(woCoat.z);
+    c.coat = clearcoat_ * coatLobe_->albedo(woCoat.z);
     rest -= c.coat;
   }
   if (sheenMax_ > 0 && woLocal.z > 0) {
-    c.sheen = rest * sheenMax_ * sheen_.albedo(woLocal.z);
+    c.sheen = rest * sheenMax_ * sheen_->albedo(woLocal.z);
     rest -= c.sheen;
   }
   c.trans = rest * transmission_;
@@ -55,25 +67,25 @@ GltfBsdf::Choice GltfBsdf::choose(const Vec3f& wo) const {
 }
 
 Rgb GltfBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
-  const Vec3f woL = shading_.toLocal(wo), wiL = shading_.toLocal(wi);
+  const Vec3f woL = local(wo), wiL = shading_.toLocal(wi);
   Rgb f = base_.eval(woL, wiL);
-  if (transmission_ > 0) f += dielectric_.eval(woL, wiL) * transmission_;
-  if (sheenMax_ > 0) f = sheen_.eval(woL, wiL) + f * sheenScale(woL, wiL);
+  if (transmission_ > 0) f += dielectric_->eval(woL, wiL) * transmission_;
+  if (sheenMax_ > 0) f = sheen_->eval(woL, wiL) + f * sheenScale(woL, wiL);
   if (clearcoat_ > 0) {
-    const Vec3f woC = coat_.toLocal(wo), wiC = coat_.toLocal(wi);
-    f = coatLobe_.eval(woC, wiC) * clearcoat_ + f * coatScale(woC, wiC);
+    const Vec3f woC = coatLocal(wo), wiC = coat_.toLocal(wi);
+    f = coatLobe_->eval(woC, wiC) * clearcoat_ + f * coatScale(woC, wiC);
   }
   return f;
 }
 
 float GltfBsdf::pdf(const Vec3f& wo, const Vec3f& wi) const {
   const Choice c = choose(wo);
-  const Vec3f woL = shading_.toLocal(wo), wiL = shading_.toLocal(wi);
+  const Vec3f woL = local(wo), wiL = shading_.toLocal(wi);
   float p = 0;
   if (c.base > 0) p += c.base * base_.pdf(woL, wiL);
-  if (c.trans > 0) p += c.trans * dielectric_.pdf(woL, wiL);
-  if (c.sheen > 0) p += c.sheen * sheen_.pdf(woL, wiL);
-  if (c.coat > 0) p += c.coat * coatLobe_.pdf(coat_.toLocal(wo), coat_.toLocal(wi));
+  if (c.trans > 0) p += c.trans * dielectric_->pdf(woL, wiL);
+  if (c.sheen > 0) p += c.sheen * sheen_->pdf(woL, wiL);
+  if (c.coat > 0) p += c.coat * coatLobe_->pdf(coatLocal(wo), coat_.toLocal(wi));
   return p;
 }
 
@@ -84,16 +96,16 @@ std::optional<BsdfSample> GltfBsdf::sample(const Vec3f& wo, float uLobe, const V
   // Pick a lobe with uLobe, then rescale it to [0, 1) for the lobe's own choice.
   float x = uLobe;
   if (x < c.coat) {
-    s = coatLobe_.sample(coat_.toLocal(wo), u);
+    s = coatLobe_->sample(coatLocal(wo), u);
     coatFrame = true;
   } else if ((x -= c.coat) < c.sheen) {
-    s = sheen_.sample(shading_.toLocal(wo), u);
+    s = sheen_->sample(local(wo), u);
   } else if ((x -= c.sheen) < c.trans) {
-    s = dielectric_.sample(shading_.toLocal(wo), x / c.trans, u);
+    s = dielectric_->sample(local(wo), x / c.trans, u);
   } else {
     x -= c.trans;
     if (!(c.base > 0)) return std::nullopt;
-    s = base_.sample(shading_.toLocal(wo), std::min(x / c.base, 0.99999994f), u);
+    s = base_.sample(local(wo), std::min(x / c.base, 0.99999994f), u);
   }
   if (!s) return std::nullopt;
   const Vec3f wi = normalize((coatFrame ? coat_ : shading_).toWorld(s->wi));

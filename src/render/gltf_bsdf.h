@@ -40,6 +40,11 @@ class GltfBsdf {
   // shading: z = the (normal-mapped) shading normal on the viewer's side;
   // coat: z = the clearcoat's normal on the viewer's side.
   GltfBsdf(const GltfBsdfParams& params, const Frame& shading, const Frame& coat);
+  // The same BSDF prepared for the view direction wo (the renderer's hit, seen
+  // from one direction): wo in each lobe's frame, the lobe choice and what the
+  // base lobe needs of wo alone are computed here once. Other directions work
+  // as wo too; the values are the same bits either way.
+  GltfBsdf(const GltfBsdfParams& params, const Frame& shading, const Frame& coat, const Vec3f& wo);
 
   Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
@@ -53,6 +58,10 @@ class GltfBsdf {
     float coat = 0, sheen = 0, base = 0, trans = 0;  // probabilities, sum 1
   };
   Choice choose(const Vec3f& wo) const;
+  Choice computeChoice(const Vec3f& woLocal, const Vec3f& woCoat) const;
+  // wo in the shading and the coat frame, prepared when wo is wo_.
+  Vec3f local(const Vec3f& wo) const { return wo == wo_ ? woLocal_ : shading_.toLocal(wo); }
+  Vec3f coatLocal(const Vec3f& wo) const { return wo == wo_ ? woCoat_ : coat_.toLocal(wo); }
   // 1 - c E_c and 1 - s E_s for the pair of directions (local to each frame).
   float coatScale(const Vec3f& woCoat, const Vec3f& wiCoat) const;
   float sheenScale(const Vec3f& wo, const Vec3f& wi) const;
@@ -61,10 +70,14 @@ class GltfBsdf {
   float transmission_;  // (1 - metallic) * transmission
   float clearcoat_;
   float sheenMax_;
+  // The prepared view (NaN: none; a NaN never compares equal).
+  Vec3f wo_, woLocal_, woCoat_;
+  Choice choice_;
   Bsdf base_;
-  DielectricBsdf dielectric_;
-  ClearcoatBsdf coatLobe_;
-  SheenBsdf sheen_;
+  // The layers a material has: a plain metallic-roughness material builds none.
+  std::optional<DielectricBsdf> dielectric_;  // when transmission_ > 0
+  std::optional<ClearcoatBsdf> coatLobe_;     // when clearcoat_ > 0
+  std::optional<SheenBsdf> sheen_;            // when sheenMax_ > 0
 };
 
 }  // namespace lensrt

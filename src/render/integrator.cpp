@@ -73,7 +73,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
     }
     if (depth >= settings_.maxDepth) break;
 
-    const GltfBsdf bsdf(sp.bsdf, sp.frame, sp.coatFrame);
+    const GltfBsdf bsdf(sp.bsdf, sp.frame, sp.coatFrame, wo);
     const Vec3f& ng = sp.geometricNormal;
     // A direction is usable when the geometric and the shading normal agree on
     // its side (otherwise a reflection would pass through the surface or a

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -196,6 +197,49 @@ TEST(GltfBsdf, SampleReportsTheValuesOfEvalAndPdf) {
     EXPECT_NEAR(s->f.x, g.eval(wo, s->wi).x, 1e-3f * std::max(1e-3f, s->f.x));
   }
   EXPECT_GT(transmitted, 100);
+}
+
+// The renderer prepares each hit's BSDF for its view direction; that must be a
+// pure saving: the same bits as the unprepared BSDF for that wo, and any other
+// wo still evaluated as before. Every combination of layers, smooth to rough,
+// specular layer on and off, random directions on both sides.
+TEST(GltfBsdf, PreparedForAViewGivesTheSameBits) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<float> u(0, 1);
+  const auto direction = [&] {
+    const float z = 2 * u(rng) - 1, phi = 2 * float(kPi) * u(rng), r = std::sqrt(std::max(0.0f, 1 - z * z));
+    return Vec3f{r * std::cos(phi), r * std::sin(phi), z};
+  };
+  const auto same = [](const Rgb& a, const Rgb& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  int samples = 0;
+  for (int layers = 0; layers < 16; ++layers) {
+    for (int k = 0; k < 200; ++k) {
+      GltfBsdfParams p = layered(layers & 1 ? 0.7f : 0, layers & 2 ? 0.5f : 0, layers & 4 ? 0.6f : 0,
+                                 u(rng) < 0.3f ? 1.0f : u(rng), layers & 8);
+      p.base.roughness = u(rng) < 0.2f ? 0.0f : u(rng);
+      p.base.specularWeight = u(rng) < 0.3f ? 0.0f : u(rng);
+      p.clearcoatRoughness = u(rng);
+      const Frame frame = Frame::fromNormal(normalize(Vec3f{0.1f, 0.2f, 1}));
+      const Vec3f wo = direction(), wi = direction(), other = direction();
+      const GltfBsdf plain(p, frame, tiltedCoat()), prepared(p, frame, tiltedCoat(), wo);
+      for (const Vec3f& w : {wo, other}) {
+        ASSERT_TRUE(same(plain.eval(w, wi), prepared.eval(w, wi))) << "layers " << layers << " k " << k;
+        ASSERT_TRUE(same(plain.eval(wi, w), prepared.eval(wi, w))) << "layers " << layers << " k " << k;
+        const float a = plain.pdf(w, wi), b = prepared.pdf(w, wi);
+        ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << "layers " << layers << " k " << k;
+        const float uLobe = u(rng);
+        const Vec2f uDir{u(rng), u(rng)};
+        const auto sa = plain.sample(w, uLobe, uDir), sb = prepared.sample(w, uLobe, uDir);
+        ASSERT_EQ(sa.has_value(), sb.has_value());
+        if (!sa) continue;
+        ++samples;
+        ASSERT_EQ(sa->wi, sb->wi);
+        ASSERT_TRUE(same(sa->f, sb->f));
+        ASSERT_EQ(std::memcmp(&sa->pdf, &sb->pdf, sizeof sa->pdf), 0);
+      }
+    }
+  }
+  EXPECT_GT(samples, 2000);
 }
 
 }  // namespace
