@@ -154,7 +154,8 @@ ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& 
     sp.coatFrame = sp.frame;
   }
   if (maxComponent(m.sheenColor) > 0) {
-    sp.bsdf.sheenColor = m.sheenColor * rgb(lookup(scene, m.sheenColorTexture, hit));
+    // glTF's sheen colour is a reflectance in [0, 1] (unlike specularColorFactor).
+    sp.bsdf.sheenColor = min(m.sheenColor * rgb(lookup(scene, m.sheenColorTexture, hit)), Rgb{1, 1, 1});
     sp.bsdf.sheenRoughness =
         std::clamp(m.sheenRoughness * lookup(scene, m.sheenRoughnessTexture, hit).w, 0.0f, 1.0f);
   }

@@ -1,8 +1,8 @@
 // libFuzzer target for the glTF front end: the input is written to a file
 // (.glb when it starts with the binary magic, else .gltf) and goes through
 // tinygltf, our conversion (loadGltf), camera selection and the Embree scene,
-// then a few rays. Only InputError may escape; a crash, a sanitizer report, any
-// other exception or a non-finite hit is a finding.
+// then a few rays, each hit's material and its BSDF. Only InputError may escape; a crash, a sanitizer report,
+// any other exception or a non-finite hit is a finding.
 #include <unistd.h>
 
 #include <cmath>
@@ -15,6 +15,8 @@
 #include "core/error.h"
 #include "core/warnings.h"
 #include "fuzz/fuzz_check.h"
+#include "render/gltf_bsdf.h"
+#include "render/material_eval.h"
 #include "scene/camera_selection.h"
 #include "scene/gltf_loader.h"
 #include "scene/render_scene.h"
@@ -40,8 +42,10 @@ const std::filesystem::path& workDir() {
 void checkTextures(const SceneDesc& desc, const SurfaceHit& hit) {
   if (hit.material < 0 || static_cast<std::size_t>(hit.material) >= desc.materials.size()) return;
   const Material& m = desc.materials[static_cast<std::size_t>(hit.material)];
-  for (const TextureRef* ref :
-       {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.emissiveTexture}) {
+  for (const TextureRef* ref : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
+                                &m.emissiveTexture, &m.specularTexture, &m.specularColorTexture,
+                                &m.transmissionTexture, &m.clearcoatTexture, &m.clearcoatRoughnessTexture,
+                                &m.clearcoatNormalTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture}) {
     if (!ref->valid()) continue;
     LENSRT_FUZZ_CHECK(static_cast<std::size_t>(ref->texture) < desc.textures.size());
     const Vec4f t =
@@ -50,9 +54,26 @@ void checkTextures(const SceneDesc& desc, const SurfaceHit& hit) {
   }
 }
 
-void checkHit(const RenderScene& scene, const std::optional<SurfaceHit>& hit) {
+// The material at the hit as the renderer builds it (textures, normal maps,
+// the layer extensions' factors) and its BSDF: samples and values finite.
+void checkShading(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo) {
+  const ShadingPoint sp = evaluateMaterial(materials, hit, wo);
+  LENSRT_FUZZ_CHECK(isFinite(sp.frame.n) && isFinite(sp.coatFrame.n) && isFinite(sp.emission));
+  const GltfBsdf bsdf(sp.bsdf, sp.frame, sp.coatFrame);
+  for (int k = 0; k < 8; ++k) {
+    const float u = (k + 0.5f) / 8;
+    const std::optional<BsdfSample> s = bsdf.sample(wo, u, {u, 1 - u});
+    if (!s) continue;
+    LENSRT_FUZZ_CHECK(isFinite(s->wi) && isFinite(s->f) && std::isfinite(s->pdf) && s->pdf > 0);
+    LENSRT_FUZZ_CHECK(isFinite(bsdf.eval(wo, s->wi)) && std::isfinite(bsdf.pdf(wo, s->wi)));
+  }
+}
+
+void checkHit(const RenderScene& scene, const MaterialTable& materials, const Ray& ray,
+              const std::optional<SurfaceHit>& hit) {
   if (!hit) return;
   checkTextures(scene.desc(), *hit);
+  checkShading(materials, *hit, -ray.direction);
   LENSRT_FUZZ_CHECK(std::isfinite(hit->t) && isFinite(hit->position));
   LENSRT_FUZZ_CHECK(isFinite(hit->geometricNormal) && isFinite(hit->shadingNormal));
   LENSRT_FUZZ_CHECK(std::abs(length(hit->shadingNormal) - 1.0f) < 1e-3f);
@@ -67,6 +88,7 @@ void exercise(const std::filesystem::path& file) {
   const CameraDesc camera = selectCamera(desc, "", 1.5f);
   LENSRT_FUZZ_CHECK(isFinite(camera.worldFromCamera.point(Vec3f{0, 0, 0})));
   const RenderScene scene(std::move(desc));
+  const MaterialTable materials(scene.desc());
   const Bounds3f b = scene.bounds();
   const Vec3f eye = camera.worldFromCamera.point(Vec3f{0, 0, 0});
   for (int i = 0; i < 16; ++i) {
@@ -74,11 +96,15 @@ void exercise(const std::filesystem::path& file) {
     const Vec3f corner{(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z};
     const Vec3f target = i < 8 ? corner : b.center();
     const Vec3f d = target - eye;
-    if (length(d) > 0.0f && isFinite(d)) checkHit(scene, scene.intersect(Ray{eye, normalize(d)}));
+    if (length(d) > 0.0f && isFinite(d)) {
+      const Ray ray{eye, normalize(d)};
+      checkHit(scene, materials, ray, scene.intersect(ray));
+    }
     const Vec3f axis{i % 3 == 0 ? 1.f : 0.f, i % 3 == 1 ? 1.f : 0.f, i % 3 == 2 ? 1.f : 0.f};
     const Vec3f from = b.center() - axis * (length(b.diagonal()) + 1.0f);
     if (isFinite(from)) {
-      checkHit(scene, scene.intersect(Ray{from, axis}));
+      const Ray ray{from, axis};
+      checkHit(scene, materials, ray, scene.intersect(ray));
       scene.occluded(Ray{from, axis, 0.0f, 1.0f});
     }
   }
