@@ -9,31 +9,15 @@
 #include <random>
 #include <vector>
 
+#include "bsdf_check_util.h"
 #include "core/constants.h"
 
 namespace lensrt {
 namespace {
 
-Vec3f sphericalDir(double theta, double phi) {
-  return {float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
-          float(std::cos(theta))};
-}
-
-// Composite Simpson over the hemisphere in (theta, phi) of g(w) sin(theta).
-double integrateHemisphere(const std::function<double(const Vec3f&)>& g, double theta0, double theta1,
-                           double phi0, double phi1, int n) {
-  const double ht = (theta1 - theta0) / n, hp = (phi1 - phi0) / n;
-  double sum = 0;
-  for (int i = 0; i <= n; ++i) {
-    const double wt = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
-    const double theta = theta0 + i * ht;
-    for (int j = 0; j <= n; ++j) {
-      const double wp = (j == 0 || j == n) ? 1 : (j % 2 ? 4 : 2);
-      sum += wt * wp * g(sphericalDir(theta, phi0 + j * hp)) * std::sin(theta);
-    }
-  }
-  return sum * ht * hp / 9;
-}
+using test::sphericalDir;
+// Over (theta, phi) regions of the hemisphere: test::integrateSphere.
+const auto& integrateHemisphere = test::integrateSphere;
 
 struct Case {
   float roughness, metallic, thetaDeg;
@@ -139,11 +123,7 @@ TEST(Bsdf, SampleReportsTheValuesOfEvalAndPdf) {
   }
 }
 
-// Wilson-Hilferty: upper tail of chi-square with k degrees of freedom.
-double chiSquarePValue(double x, int k) {
-  const double z = (std::cbrt(x / k) - (1 - 2.0 / (9 * k))) / std::sqrt(2.0 / (9 * k));
-  return 0.5 * std::erfc(z / std::sqrt(2.0));
-}
+using test::chiSquarePValue;
 
 TEST(Bsdf, SamplingMatchesPdfChiSquare) {
   constexpr int kThetaBins = 16, kPhiBins = 32, kSamples = 100000;

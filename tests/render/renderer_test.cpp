@@ -84,6 +84,31 @@ double cornerIrradiance(double a, double b, double h) {
   return 0.5 * (a / ra * std::atan(b / ra) + b / rb * std::atan(a / rb));
 }
 
+// A scene under a black sky, traced ray by ray, its material 0 (the plane)
+// made exactly Lambertian.
+struct BlackSkyTracer {
+  static MaterialTable lambertFirst(const SceneDesc& desc) {
+    MaterialTable m(desc);
+    m.extra(0).specularWeight = 0;
+    return m;
+  }
+  static IntegratorSettings depth(int maxDepth) {
+    IntegratorSettings s;
+    s.maxDepth = maxDepth;
+    return s;
+  }
+  BlackSkyTracer(SceneDesc desc, int maxDepth)
+      : scene(std::move(desc)),
+        materials(lambertFirst(scene.desc())),
+        lights(materials, black, scene.bounds()),
+        integrator(scene, materials, lights, black, depth(maxDepth)) {}
+  RenderScene scene;
+  MaterialTable materials;
+  Environment black;
+  LightSet lights;
+  Integrator integrator;
+};
+
 TEST(Renderer, AreaLightOverLambertianPlaneMatchesTheFormFactor) {
   // A 2 x 1 m emitter of radiance 3 at height 1.5 over a white Lambertian plane.
   constexpr double kL = 3, kH = 1.5, kX0 = -1.2, kX1 = 0.8, kZ0 = -0.4, kZ1 = 0.6;
@@ -98,14 +123,8 @@ TEST(Renderer, AreaLightOverLambertianPlaneMatchesTheFormFactor) {
   s.materials[1].baseColor = {0, 0, 0, 1};
   s.materials[1].emissive = {float(kL), float(kL), float(kL)};
 
-  const RenderScene scene(std::move(s));
-  MaterialTable materials(scene.desc());
-  materials.extra(0).specularWeight = 0;
-  const Environment black;
-  const LightSet lights(materials, black, scene.bounds());
-  IntegratorSettings settings;
-  settings.maxDepth = 1;
-  const Integrator integrator(scene, materials, lights, black, settings);
+  const BlackSkyTracer tracer(std::move(s), 1);
+  const Integrator& integrator = tracer.integrator;
 
   // Points on the plane under the light; superpose four corner rectangles.
   for (const Vec3f target : {Vec3f{0, 0, 0}, Vec3f{0.5f, 0, 0.3f}, Vec3f{1.5f, 0, -1}}) {
@@ -149,14 +168,8 @@ TEST(Renderer, LightThroughAnIndexMatchedSheetKeepsTheFormFactor) {
   s.materials[2].ior = 1;
   s.materials[2].roughness = 0;
 
-  const RenderScene scene(std::move(s));
-  MaterialTable materials(scene.desc());
-  materials.extra(0).specularWeight = 0;
-  const Environment black;
-  const LightSet lights(materials, black, scene.bounds());
-  IntegratorSettings settings;
-  settings.maxDepth = 2;  // plane, sheet, light
-  const Integrator integrator(scene, materials, lights, black, settings);
+  const BlackSkyTracer tracer(std::move(s), 2);  // plane, sheet, light
+  const Integrator& integrator = tracer.integrator;
   const double expected = kL * 4 * cornerIrradiance(1, 1, kH) / kPi;  // under the centre
   const Vec3f origin{0.3f, 0.5f, 0.2f};
   const Ray ray{origin, normalize(Vec3f{0, 0, 0} - origin), 0, kInfinityF};
