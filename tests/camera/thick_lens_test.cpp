@@ -19,8 +19,6 @@ using test::cameraRay;
 using test::imageOf;
 using test::pointAtZ;
 
-constexpr double kPixelMm = 36.0 / 640.0;
-
 ThickLensParams lectureThick(double fNumber, double focusM) {
   return thickLensFromParaxial(computeParaxial(test::lectureDoubleGauss(0.5)), fNumber, focusM);
 }

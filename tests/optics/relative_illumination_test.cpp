@@ -19,7 +19,7 @@ namespace {
 LensSystem lensWithRearStop(double stopDiameter, double filmDistance) {
   LensPrescription rx;
   rx.name = "rear-stop";
-  Surface front{100.0, 4.0, 30.0, {1.5, 60.0, ""}};
+  Surface front{100.0, 4.0, 30.0, {1.5, 60.0, "", std::nullopt}};
   Surface back{-100.0, 2.0, 30.0, {}};
   Surface stop{0.0, filmDistance, stopDiameter, {}};
   stop.isStop = true;
