@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iterator>
 
 #include "core/error.h"
 #include "image/srgb.h"
@@ -232,6 +234,37 @@ TEST(ImageIo, UnreadableFilesThrowInputError) {
   std::ofstream(dir / "garbage.exr") << "not an image";
   EXPECT_THROW(readImage(dir / "garbage.exr"), InputError);
   EXPECT_THROW(readImage(dir.path()), InputError);
+}
+
+// A header attribute claiming more bytes than the file holds is refused
+// before OpenEXR allocates them (the fuzzer's 1.8 GB from a 600-byte file),
+// read from a file or from memory.
+TEST(ImageIo, ExrAttributeLargerThanTheFileIsRefused) {
+  const ScratchDir dir;
+  writeImage(dir / "good.exr", renderLikeImage(), {});
+  std::string bytes;
+  {
+    std::ifstream in(dir / "good.exr", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // The first attribute's size field follows its name and type names.
+  const std::size_t name = 8, type = bytes.find('\0', name) + 1, size = bytes.find('\0', type) + 1;
+  ASSERT_LT(size + 4, bytes.size());
+  const std::uint32_t huge = 0x70000000u;
+  for (int i = 0; i < 4; ++i) bytes[size + std::size_t(i)] = char((huge >> (8 * i)) & 0xff);
+  std::ofstream(dir / "huge-attribute.exr", std::ios::binary) << bytes;
+  for (const auto& read :
+       {std::function<Image()>([&] { return readImage(dir / "huge-attribute.exr"); }),
+        std::function<Image()>([&] { return decodeImage(bytes, "mem.exr", nullptr, 1u << 22); })}) {
+    try {
+      read();
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("claims 1879048192 bytes, more than the file has left"),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 TEST(ImageIo, WritableExtensions) {
