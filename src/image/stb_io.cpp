@@ -6,6 +6,7 @@
 
 #include <climits>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -82,6 +83,51 @@ std::string encodePreview(const std::string& name, PreviewFormat format, int wid
   return bytes;
 }
 
+// stb_image's Radiance decoder loops forever on a run-length scanline whose
+// count byte is 0 (it never advances; past the end of the data every byte
+// reads 0): the fuzzer found a 71-byte .hdr that hung `lensrt diff`. Walk the
+// run-length scanlines the way stb_image will and refuse such counts first.
+// Flat (old-style) data and other formats are left to stb_image.
+void checkRadianceRunLengths(std::string_view bytes, const std::string& name) {
+  std::size_t pos = 0;
+  const auto line = [&] {
+    const std::size_t end = bytes.find('\n', pos);
+    if (end == std::string_view::npos) return std::string_view{};
+    const std::string_view l = bytes.substr(pos, end - pos);
+    pos = end + 1;
+    return l;
+  };
+  for (int i = 0; i < 1024; ++i)  // header lines up to the empty one
+    if (line().empty()) break;
+  int height = 0, width = 0;
+  const std::string resolution(line());
+  if (std::sscanf(resolution.c_str(), "-Y %d +X %d", &height, &width) != 2) return;  // stb reports it
+  if (width < 8 || width >= 32768 || height <= 0) return;                            // flat data
+  const auto byte = [&]() -> int {
+    return pos < bytes.size() ? static_cast<unsigned char>(bytes[pos++]) : -1;
+  };
+  for (int y = 0; y < height; ++y) {
+    const int c1 = byte(), c2 = byte(), len = byte();
+    if (c1 != 2 || c2 != 2 || len < 0 || (len & 0x80)) return;  // flat from here on
+    if (((len << 8) | byte()) != width) return;                 // stb reports it
+    for (int k = 0; k < 4; ++k)
+      for (int x = 0; x < width;) {
+        int count = byte();
+        if (count < 0) throw InputError(name, "cannot decode image: the Radiance data ends early");
+        if (count > 128) {
+          count -= 128;
+          if (byte() < 0) throw InputError(name, "cannot decode image: the Radiance data ends early");
+        } else {
+          for (int j = 0; j < count; ++j)
+            if (byte() < 0) throw InputError(name, "cannot decode image: the Radiance data ends early");
+        }
+        if (count == 0) throw InputError(name, "cannot decode image: a Radiance run of length 0");
+        if (count > width - x) return;  // stb reports it
+        x += count;
+      }
+  }
+}
+
 Image decodeStbImage(std::string_view bytes, const std::string& name, std::size_t maxValues) {
   if (bytes.size() > std::size_t(INT_MAX)) throw InputError(name, "the image file is larger than 2 GiB");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
@@ -108,6 +154,7 @@ Image decodeStbImage(std::string_view bytes, const std::string& name, std::size_
     for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(pixels[i]) / full;
   };
   if (stbi_is_hdr_from_memory(data, length)) {
+    checkRadianceRunLengths(bytes, name);
     const std::unique_ptr<float, StbFree> pixels(stbi_loadf_from_memory(data, length, &w, &h, &c, 0));
     fill(pixels.get(), 1.0f);
   } else if (stbi_is_16_bit_from_memory(data, length)) {

@@ -267,6 +267,33 @@ TEST(ImageIo, ExrAttributeLargerThanTheFileIsRefused) {
   }
 }
 
+// Radiance run-length data: runs and literal chunks decode (RGBE 128,64,32,
+// exponent 129 is 1.0, 0.5, 0.25), a chunk of length 0 (on which stb_image
+// spins forever) and data ending early are refused.
+TEST(ImageIo, RadianceRunLengthScanlines) {
+  const auto hdr = [](const std::string& scanline) {
+    return std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n") + scanline;
+  };
+  std::string good("\x02\x02\x00\x08", 4);
+  for (const char v : {char(128), char(64), char(32)}) good += std::string("\x88") + v;  // a run of 8
+  good += std::string("\x08") + std::string(8, char(129));                               // 8 literals
+  const Image image = decodeImage(hdr(good), "rle.hdr");
+  ASSERT_EQ(image.width, 8);
+  EXPECT_FLOAT_EQ(image.at(7, 0, 0), 1.0f);
+  EXPECT_FLOAT_EQ(image.at(3, 0, 1), 0.5f);
+  EXPECT_FLOAT_EQ(image.at(0, 0, 2), 0.25f);
+  const std::string zero("\x02\x02\x00\x08\x00", 5);
+  const std::string early("\x02\x02\x00\x08\x88", 5);
+  for (const std::string& bad : {zero, early}) {
+    try {
+      decodeImage(hdr(bad), "bad.hdr");
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("Radiance"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(ImageIo, WritableExtensions) {
   EXPECT_TRUE(isWritableImageExtension("a.EXR"));
   EXPECT_TRUE(isWritableImageExtension("dir/a.jpeg"));
