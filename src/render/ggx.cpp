@@ -1,7 +1,10 @@
 #include "render/ggx.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 #include "core/constants.h"
 
@@ -14,8 +17,11 @@ float pow5(float x) {
 }
 
 // E(mu) = f0 * one(mu) + (f90 - f0) * schlick(mu), tabulated over (alpha, mu)
-// once by stratified visible-normal sampling (each sample's weight is G2 / G1),
-// with the cosine-weighted averages 2 int E(mu) mu dmu.
+// by stratified visible-normal sampling (each sample's weight is G2 / G1),
+// with the cosine-weighted averages 2 int E(mu) mu dmu. Each alpha row is
+// computed the first time a lookup needs it (a scene's materials use a few
+// roughnesses, and the whole table costs about 150 M instructions, most of a
+// small render's start): every row is the same numbers whenever it is built.
 class AlbedoTable {
  public:
   static constexpr int kN = 32;
@@ -26,6 +32,7 @@ class AlbedoTable {
   AlbedoTerms at(float alpha, float mu) const {
     const float a = std::clamp(alpha, 0.0f, 1.0f) * (kN - 1), m = std::clamp(mu, 0.0f, 1.0f) * (kN - 1);
     const int i = std::min(int(a), kN - 2), j = std::min(int(m), kN - 2);
+    ensureRows(i);
     const float s = a - float(i), t = m - float(j);
     const auto bilerp = [&](const float(&v)[kN][kN]) {
       return (v[i][j] * (1 - t) + v[i][j + 1] * t) * (1 - s) +
@@ -36,44 +43,61 @@ class AlbedoTable {
   AlbedoTerms average(float alpha) const {
     const float a = std::clamp(alpha, 0.0f, 1.0f) * (kN - 1);
     const int i = std::min(int(a), kN - 2);
+    ensureRows(i);
     const float t = a - float(i);
     return {avgOne_[i] * (1 - t) + avgOne_[i + 1] * t, avgSchlick_[i] * (1 - t) + avgSchlick_[i + 1] * t};
   }
 
  private:
-  AlbedoTable() {
-    constexpr int kStrata = 24;
-    for (int ia = 0; ia < kN; ++ia) {
-      const float alpha = std::max(kMinAlpha, float(ia) / (kN - 1));
-      double sumOne = 0, sumSchlick = 0;
-      for (int im = 0; im < kN; ++im) {
-        const float mu = std::max(1e-3f, float(im) / (kN - 1));
-        const Vec3f wo{std::sqrt(1 - mu * mu), 0, mu};
-        double one = 0, schlick = 0;
-        for (int a = 0; a < kStrata; ++a)
-          for (int b = 0; b < kStrata; ++b) {
-            const Vec3f h = sampleVisibleNormal(wo, alpha, {(a + 0.5f) / kStrata, (b + 0.5f) / kStrata});
-            const Vec3f wi = h * (2 * dot(wo, h)) - wo;
-            if (wi.z <= 0) continue;
-            const float lo = lambda(alpha, wo), li = lambda(alpha, wi);
-            const double w = (1 + lo) / (1 + lo + li);  // G2 / G1
-            one += w;
-            schlick += w * pow5(std::clamp(1 - dot(wo, h), 0.0f, 1.0f));
-          }
-        one_[ia][im] = float(one / (kStrata * kStrata));
-        schlick_[ia][im] = float(schlick / (kStrata * kStrata));
-        const float w = (im == 0 || im == kN - 1) ? 0.5f : 1.0f;  // trapezoid rule
-        sumOne += w * one_[ia][im] * mu;
-        sumSchlick += w * schlick_[ia][im] * mu;
-      }
-      avgOne_[ia] = float(2 * sumOne / (kN - 1));
-      avgSchlick_[ia] = float(2 * sumSchlick / (kN - 1));
-    }
+  AlbedoTable() = default;
+  // Rows i and i + 1, built once (thread-safe): one acquire load once built.
+  void ensureRows(int i) const {
+    if (!pairReady_[i].load(std::memory_order_acquire)) buildRows(i);
   }
-  float one_[kN][kN];
-  float schlick_[kN][kN];
-  float avgOne_[kN];
-  float avgSchlick_[kN];
+  // Kept out of line so that the lookups stay small.
+  [[gnu::noinline]] void buildRows(int i) const {
+    const std::scoped_lock lock(mutex_);
+    for (const int ia : {i, i + 1}) {
+      if (built_[ia]) continue;
+      buildRow(ia);
+      built_[ia] = true;
+    }
+    pairReady_[i].store(true, std::memory_order_release);
+  }
+  void buildRow(int ia) const {
+    constexpr int kStrata = 24;
+    const float alpha = std::max(kMinAlpha, float(ia) / (kN - 1));
+    double sumOne = 0, sumSchlick = 0;
+    for (int im = 0; im < kN; ++im) {
+      const float mu = std::max(1e-3f, float(im) / (kN - 1));
+      const Vec3f wo{std::sqrt(1 - mu * mu), 0, mu};
+      double one = 0, schlick = 0;
+      for (int a = 0; a < kStrata; ++a)
+        for (int b = 0; b < kStrata; ++b) {
+          const Vec3f h = sampleVisibleNormal(wo, alpha, {(a + 0.5f) / kStrata, (b + 0.5f) / kStrata});
+          const Vec3f wi = h * (2 * dot(wo, h)) - wo;
+          if (wi.z <= 0) continue;
+          const float lo = lambda(alpha, wo), li = lambda(alpha, wi);
+          const double w = (1 + lo) / (1 + lo + li);  // G2 / G1
+          one += w;
+          schlick += w * pow5(std::clamp(1 - dot(wo, h), 0.0f, 1.0f));
+        }
+      one_[ia][im] = float(one / (kStrata * kStrata));
+      schlick_[ia][im] = float(schlick / (kStrata * kStrata));
+      const float w = (im == 0 || im == kN - 1) ? 0.5f : 1.0f;  // trapezoid rule
+      sumOne += w * one_[ia][im] * mu;
+      sumSchlick += w * schlick_[ia][im] * mu;
+    }
+    avgOne_[ia] = float(2 * sumOne / (kN - 1));
+    avgSchlick_[ia] = float(2 * sumSchlick / (kN - 1));
+  }
+  mutable std::mutex mutex_;
+  mutable std::array<std::atomic<bool>, kN - 1> pairReady_{};  // rows i and i + 1 are built
+  mutable std::array<bool, kN> built_{};                       // under mutex_
+  mutable float one_[kN][kN] = {};
+  mutable float schlick_[kN][kN] = {};
+  mutable float avgOne_[kN] = {};
+  mutable float avgSchlick_[kN] = {};
 };
 
 }  // namespace

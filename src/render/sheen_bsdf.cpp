@@ -1,7 +1,10 @@
 #include "render/sheen_bsdf.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 #include "core/constants.h"
 #include "render/ggx.h"
@@ -22,7 +25,10 @@ float visibility(float cosO, float cosI) {
 // E(roughness, mu) = int D V cos_i dw_i over the hemisphere for a white lobe,
 // on a grid over roughness in [kMinRoughness, 1] (r = roughness^2 changes the
 // lobe fastest near 0) and sqrt(mu) in [0, 1] (the albedo rises steeply
-// toward grazing), by the midpoint rule.
+// toward grazing), by the midpoint rule. Each roughness row is computed the
+// first time a lookup needs it (the whole table costs about 800 M
+// instructions, a quarter of a second; a material's sheen roughness uses two
+// rows): every row is the same numbers whenever it is built.
 class SheenAlbedoTable {
  public:
   static constexpr int kN = 48;
@@ -35,39 +41,55 @@ class SheenAlbedoTable {
     const float a = std::clamp((roughness - kMin) / (1 - kMin), 0.0f, 1.0f) * (kN - 1);
     const float m = std::sqrt(std::clamp(mu, 0.0f, 1.0f)) * (kN - 1);
     const int i = std::min(int(a), kN - 2), j = std::min(int(m), kN - 2);
+    ensureRows(i);
     const float s = a - float(i), t = m - float(j);
     return (e_[i][j] * (1 - t) + e_[i][j + 1] * t) * (1 - s) +
            (e_[i + 1][j] * (1 - t) + e_[i + 1][j + 1] * t) * s;
   }
 
  private:
-  SheenAlbedoTable() {
+  SheenAlbedoTable() = default;
+  // Rows i and i + 1, built once (thread-safe): one acquire load once built.
+  void ensureRows(int i) const {
+    if (!pairReady_[i].load(std::memory_order_acquire)) buildRows(i);
+  }
+  // Kept out of line so that the lookups stay small.
+  [[gnu::noinline]] void buildRows(int i) const {
+    const std::scoped_lock lock(mutex_);
+    for (const int ir : {i, i + 1}) {
+      if (built_[ir]) continue;
+      buildRow(ir);
+      built_[ir] = true;
+    }
+    pairReady_[i].store(true, std::memory_order_release);
+  }
+  void buildRow(int ir) const {
     constexpr int kTheta = 64, kPhi = 32;
-    for (int ir = 0; ir < kN; ++ir) {
-      const float roughness =
-          SheenBsdf::kMinRoughness + (1 - SheenBsdf::kMinRoughness) * float(ir) / (kN - 1);
-      const float r = roughness * roughness;
-      for (int im = 0; im < kN; ++im) {
-        const float x = float(im) / (kN - 1);
-        const float mu = std::max(1e-4f, x * x);
-        const Vec3f wo{std::sqrt(1 - mu * mu), 0, mu};
-        // Midpoint rule in (theta_i, phi_i), phi over [0, pi] by symmetry.
-        double sum = 0;
-        for (int a = 0; a < kTheta; ++a) {
-          const float theta = (a + 0.5f) * (kPiF / 2) / kTheta;
-          for (int b = 0; b < kPhi; ++b) {
-            const float phi = (b + 0.5f) * kPiF / kPhi;
-            const Vec3f wi{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-            const Vec3f h = normalize(wo + wi);
-            sum += charlieD(r, h) * visibility(wo.z, wi.z) * wi.z * std::sin(theta);
-          }
+    const float roughness = SheenBsdf::kMinRoughness + (1 - SheenBsdf::kMinRoughness) * float(ir) / (kN - 1);
+    const float r = roughness * roughness;
+    for (int im = 0; im < kN; ++im) {
+      const float x = float(im) / (kN - 1);
+      const float mu = std::max(1e-4f, x * x);
+      const Vec3f wo{std::sqrt(1 - mu * mu), 0, mu};
+      // Midpoint rule in (theta_i, phi_i), phi over [0, pi] by symmetry.
+      double sum = 0;
+      for (int a = 0; a < kTheta; ++a) {
+        const float theta = (a + 0.5f) * (kPiF / 2) / kTheta;
+        for (int b = 0; b < kPhi; ++b) {
+          const float phi = (b + 0.5f) * kPiF / kPhi;
+          const Vec3f wi{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+          const Vec3f h = normalize(wo + wi);
+          sum += charlieD(r, h) * visibility(wo.z, wi.z) * wi.z * std::sin(theta);
         }
-        sum *= 2 * (kPiF / 2 / kTheta) * (kPiF / kPhi);
-        e_[ir][im] = std::min(1.0f, float(sum));
       }
+      sum *= 2 * (kPiF / 2 / kTheta) * (kPiF / kPhi);
+      e_[ir][im] = std::min(1.0f, float(sum));
     }
   }
-  float e_[kN][kN];
+  mutable std::mutex mutex_;
+  mutable std::array<std::atomic<bool>, kN - 1> pairReady_{};  // rows i and i + 1 are built
+  mutable std::array<bool, kN> built_{};                       // under mutex_
+  mutable float e_[kN][kN] = {};
 };
 
 }  // namespace
