@@ -392,7 +392,11 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   // glTF: counter-clockwise is the front unless the world transform mirrors.
   Vec3f ng = cross(p1 - p0, p2 - p0);
   if (rec.mirrored) ng = -ng;
-  hit.geometricNormal = unitVector(ng).value_or(normalize(-dir));
+  // (value_or would normalise the fallback at every hit.)
+  if (const auto n = unitVector(ng))
+    hit.geometricNormal = *n;
+  else
+    hit.geometricNormal = normalize(-dir);
 
   hit.shadingNormal = hit.geometricNormal;
   if (!m.normals.empty()) {
