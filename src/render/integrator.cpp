@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/dielectric_bsdf.h"
+#include "render/ggx.h"
 #include "render/gltf_bsdf.h"
 
 namespace lensrt {
@@ -27,7 +29,41 @@ float powerHeuristic(float pdfA, float pdfB) {
 
 Integrator::Integrator(const RenderScene& scene, const MaterialTable& materials, const LightSet& lights,
                        const Environment& environment, const IntegratorSettings& settings)
-    : scene_(scene), materials_(materials), lights_(lights), environment_(environment), settings_(settings) {}
+    : scene_(scene), materials_(materials), lights_(lights), environment_(environment), settings_(settings) {
+  for (const Material& m : scene.desc().materials)
+    thinGlass_ = thinGlass_ || (m.transmission > 0 && m.thinWalled());
+}
+
+Rgb Integrator::thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite) const {
+  Rgb t{1, 1, 1};
+  for (int crossings = 0; crossings < 16; ++crossings) {
+    const std::optional<SurfaceHit> hit = scene_.intersect(ray);
+    if (!hit) return t;
+    const Material& m = materials_.material(hit->material);
+    if (!(m.transmission > 0) || !m.thinWalled()) return {0, 0, 0};
+    // What the sheet lets through straight: the transmitting share of the
+    // dielectric, less its Fresnel reflection, tinted by the base colour.
+    const ShadingPoint sp = evaluateMaterial(materials_, *hit, -ray.direction);
+    // Only smooth sheets: through a rough one the light is scattered, and
+    // paths that scatter at the sheet and aim at the light from there (next-
+    // event estimation at the sheet) already carry it.
+    if (ggx::alphaFromRoughness(sp.bsdf.base.roughness) > ggx::kMinAlpha) return {0, 0, 0};
+    const float cosine = std::abs(dot(ray.direction, sp.geometricNormal));
+    const float reflected = sp.bsdf.base.specularWeight * fresnelDielectric(cosine, std::max(1.0f, m.ior));
+    t *= sp.bsdf.baseColor() * ((1 - sp.bsdf.base.metallic) * sp.bsdf.transmission * (1 - reflected));
+    if (!(maxComponent(t) > 0)) return {0, 0, 0};
+    // On past the sheet, toward the same light point.
+    ray.origin = offsetOrigin(hit->position, -sp.geometricNormal);
+    if (finite) {
+      const Vec3f d = target - ray.origin;
+      const float len = length(d);
+      if (!(len > offsetScale(target))) return t;
+      ray.direction = d / len;
+      ray.tMax = len * (1 - 1e-4f) - offsetScale(target);
+    }
+  }
+  return {0, 0, 0};
+}
 
 PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const {
   PathSample out;
@@ -104,9 +140,17 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
           }
 
           if (settings_.observer) settings_.observer->traced(RayKind::Shadow, shadow);
-          if (!scene_.occluded(shadow)) {
+          // Punctual lights shine through thin-walled glass (see
+          // thinGlassTransmittance); every other shadow ray stops at anything.
+          const Rgb visible =
+              ls->delta && thinGlass_
+                  ? thinGlassTransmittance(
+                        shadow, std::isfinite(ls->distance) ? hit->position + ls->wi * ls->distance : Vec3f{},
+                        std::isfinite(ls->distance))
+                  : Rgb{1, 1, 1} * (scene_.occluded(shadow) ? 0.0f : 1.0f);
+          if (maxComponent(visible) > 0) {
             const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(wo, ls->wi));
-            Rgb contribution = beta * f * ls->radiance * (w / ls->pdf);
+            Rgb contribution = beta * f * ls->radiance * visible * (w / ls->pdf);
             // Inside a medium the light's segment is absorbed too (a light
             // inside a volume; lights outside are behind its surface).
             if (maxComponent(sigma) > 0 && std::isfinite(ls->distance))

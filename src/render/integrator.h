@@ -45,8 +45,22 @@ class Integrator {
   const RenderScene& scene_;
   const MaterialTable& materials_;
   const LightSet& lights_;
+  // What reaches a punctual light along a shadow ray: 1 when nothing is in
+  // the way, 0 behind anything opaque or rough, and through smooth thin-walled
+  // transmitting sheets (window panes) their straight-through share,
+  // (1 - metallic) transmission (1 - F) times the base colour. A path can
+  // reach a point light through a smooth sheet in no other way (neither BSDF
+  // sampling nor next-event estimation at the sheet can aim along a spike at
+  // a point), so this counts nothing twice. Through rough sheets (a paper
+  // lamp shade) light arrives by next-event estimation at the sheet; area
+  // lights and the sky keep opaque shadow rays and reach through glass by
+  // BSDF sampling.
+  // `target` is the light point (finite) for re-aiming past each sheet.
+  Rgb thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite) const;
+
   const Environment& environment_;
   IntegratorSettings settings_;
+  bool thinGlass_ = false;  // the scene has thin-walled transmitting materials
 };
 
 float powerHeuristic(float pdfA, float pdfB);
