@@ -15,11 +15,29 @@ Distribution1D::Distribution1D(const std::vector<float>& weights)
   total_ = cdf_.back();
   if (total_ > 0)
     for (double& c : cdf_) c /= total_;
+  // Few bins: a plain search is as quick.
+  if (weights_.size() < 8 || weights_.size() >= (std::size_t{1} << 31) || !(total_ > 0) ||
+      !std::isfinite(total_))
+    return;
+  std::size_t k = 1;
+  while (k < weights_.size() && k < (std::size_t{1} << 16)) k *= 2;
+  guide_.resize(k + 1);
+  for (std::size_t b = 0; b <= k; ++b)
+    guide_[b] =
+        std::uint32_t(std::upper_bound(cdf_.begin() + 1, cdf_.end(), double(b) / double(k)) - cdf_.begin());
 }
 
 std::size_t Distribution1D::sample(float u, float* remapped) const {
   // First bin whose upper cdf exceeds u; zero-weight bins are never chosen.
-  const auto it = std::upper_bound(cdf_.begin() + 1, cdf_.end(), double(u));
+  const double x = u;
+  auto it = cdf_.end();
+  if (!guide_.empty() && x >= 0 && x < 1) {
+    // K is a power of two: x * K and b / K are exact, so b / K <= x < (b + 1) / K.
+    const std::size_t k = guide_.size() - 1, b = std::size_t(x * double(k));
+    it = std::upper_bound(cdf_.begin() + guide_[b], cdf_.begin() + guide_[b + 1], x);
+  } else {
+    it = std::upper_bound(cdf_.begin() + 1, cdf_.end(), x);
+  }
   std::size_t i = std::min<std::size_t>(std::size_t(it - cdf_.begin()) - 1, weights_.size() - 1);
   while (weights_[i] == 0 && i > 0) --i;  // u landed exactly on the top of the cdf
   if (remapped) {

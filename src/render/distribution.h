@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/vec.h"
@@ -27,6 +28,11 @@ class Distribution1D {
   std::vector<double> weights_;
   std::vector<double> cdf_;  // size + 1, cdf_[0] = 0, normalised
   double total_ = 0;
+  // Guide table (the cutpoint method): guide_[b] is where the search for
+  // u = b / K ends, K = guide_.size() - 1 a power of two, so a u in
+  // [b / K, (b + 1) / K) is searched for between guide_[b] and guide_[b + 1]
+  // only: the same bin as a search of the whole cdf, in a step or two.
+  std::vector<std::uint32_t> guide_;
 };
 
 // Piecewise-constant density over [0,1)^2 on a width x height grid (row-major).
