@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "camera/pinhole_camera.h"
 #include "core/constants.h"
@@ -29,6 +30,15 @@ Vec3f planePoint(const Camera& camera, float x, float y) {
   return r.origin + r.direction * (-r.origin.y / r.direction.y);
 }
 
+// The pixel (x, y) of a box filter: the mean of `radiance` over the plane
+// points the pixel sees (8x8 quadrature).
+double boxFiltered(const Camera& camera, int x, int y, const std::function<double(const Vec3f&)>& radiance) {
+  double sum = 0;
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) sum += radiance(planePoint(camera, x + (i + 0.5f) / 8, y + (j + 0.5f) / 8));
+  return sum / 64;
+}
+
 TEST(LightUnits, PointLightOverLambertianPlane) {
   constexpr float kIntensity = 7.0f, kHeight = 1.5f;
   SceneDesc scene = planeScene();
@@ -52,12 +62,7 @@ TEST(LightUnits, PointLightOverLambertianPlane) {
   };
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
-      // Box filter: the pixel is the mean over its area (8x8 quadrature).
-      double expected = 0;
-      for (int j = 0; j < 8; ++j)
-        for (int i = 0; i < 8; ++i)
-          expected += radiance(planePoint(camera, x + (i + 0.5f) / 8, y + (j + 0.5f) / 8));
-      expected /= 64;
+      const double expected = boxFiltered(camera, x, y, radiance);
       ASSERT_NEAR(img.at(x, y, 0), expected, 0.01 * expected) << "pixel " << x << "," << y;
       ASSERT_NEAR(img.at(x, y, 1), 2 * expected, 0.02 * expected);
       ASSERT_NEAR(img.at(x, y, 2), 0.5 * expected, 0.005 * expected);
@@ -105,11 +110,7 @@ TEST(LightUnits, PointLightThroughAThinGlassPane) {
   };
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
-      double expected = 0;
-      for (int j = 0; j < 8; ++j)
-        for (int i = 0; i < 8; ++i)
-          expected += radiance(planePoint(camera, x + (i + 0.5f) / 8, y + (j + 0.5f) / 8));
-      expected /= 64;
+      const double expected = boxFiltered(camera, x, y, radiance);
       ASSERT_NEAR(img.at(x, y, 0), expected, 0.01 * expected) << "pixel " << x << "," << y;
       ASSERT_NEAR(img.at(x, y, 1), 0.5 * expected, 0.005 * expected) << "pixel " << x << "," << y;
     }
