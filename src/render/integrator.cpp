@@ -66,18 +66,6 @@ Rgb Integrator::thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite
 }
 
 PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const {
-  if (settings_.observer) settings_.observer->traced(RayKind::Camera, cameraRay);
-  return trace(cameraRay, sampler, scene_.intersect(cameraRay));
-}
-
-void Integrator::firstHits(std::span<const Ray> rays, std::span<std::optional<SurfaceHit>> hits) const {
-  if (settings_.observer)
-    for (const Ray& ray : rays) settings_.observer->traced(RayKind::Camera, ray);
-  scene_.intersectCoherent(rays, hits);
-}
-
-PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler,
-                             const std::optional<SurfaceHit>& firstHit) const {
   PathSample out;
   Rgb beta{1, 1, 1};
   Ray ray = cameraRay;
@@ -91,13 +79,9 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler,
     return Rgb{std::exp(-sigma.x * distance), std::exp(-sigma.y * distance), std::exp(-sigma.z * distance)};
   };
 
-  std::optional<SurfaceHit> bounceHit;
   for (int depth = 0;; ++depth) {
-    if (depth > 0) {
-      if (settings_.observer) settings_.observer->traced(RayKind::Bounce, ray);
-      bounceHit = scene_.intersect(ray);
-    }
-    const std::optional<SurfaceHit>& hit = depth == 0 ? firstHit : bounceHit;
+    if (settings_.observer) settings_.observer->traced(depth == 0 ? RayKind::Camera : RayKind::Bounce, ray);
+    const std::optional<SurfaceHit> hit = scene_.intersect(ray);
     if (!hit) {
       const Rgb le = environment_.eval(ray.direction);
       if (maxComponent(le) > 0) {

@@ -40,12 +40,6 @@ class Integrator {
 
   // `ray` must have a unit direction.
   PathSample trace(const Ray& ray, const Sampler& sampler) const;
-  // The same path, given what the scene's intersect(ray) returns for `ray`
-  // (e.g. from firstHits).
-  PathSample trace(const Ray& ray, const Sampler& sampler, const std::optional<SurfaceHit>& firstHit) const;
-  // The scene's first hits of a batch of camera rays, traced together
-  // (RenderScene::intersectCoherent); the observer sees each ray once, here.
-  void firstHits(std::span<const Ray> rays, std::span<std::optional<SurfaceHit>> hits) const;
 
  private:
   const RenderScene& scene_;

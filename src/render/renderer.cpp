@@ -43,11 +43,6 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
     std::vector<CameraSample> samples(batch);
     std::vector<std::optional<CameraRay>> rays(batch);
     std::vector<Rgb> spectralWeights(spectral ? batch : 0);
-    // The batch's camera rays that left the lens, and their first hits: traced
-    // together (a stream of coherent rays, which Embree traces in packets).
-    std::vector<Ray> cameraRays;
-    cameraRays.reserve(batch);
-    std::vector<std::optional<SurfaceHit>> firstHits(batch);
     std::vector<Sampler> samplers;
     samplers.reserve(batch);
     for (int y = y0; y < y1; ++y) {
@@ -76,11 +71,6 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           }
         }
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
-        cameraRays.clear();
-        for (std::size_t k = 0; k < n; ++k)
-          if (rays[k]) cameraRays.push_back(rays[k]->ray);
-        integrator.firstHits(cameraRays, std::span(firstHits).first(cameraRays.size()));
-        std::size_t traced = 0;
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
           PixelAccumulator& acc = state.pixel(x0 + int(j / spp), y);
@@ -89,7 +79,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             acc.addBlocked();
             ++tileBlocked;
           } else {
-            PathSample path = integrator.trace(cr->ray, samplers[k], firstHits[traced++]);
+            PathSample path = integrator.trace(cr->ray, samplers[k]);
             if (spectral) path.radiance = path.radiance * spectralWeights[k];
             acc.add(path, cr->weight);
           }

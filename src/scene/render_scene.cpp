@@ -191,8 +191,6 @@ struct RenderScene::Impl {
   void build();
   SurfaceHit hitAt(const GeometryRecord& rec, unsigned prim, float u, float v, float t,
                    const Vec3f& dir) const;
-  // The hit an Embree query found (none when it missed or is not finite).
-  std::optional<SurfaceHit> hitOf(const RTCRayHit& rh, const Vec3f& dir) const;
 };
 
 void RenderScene::Impl::validate() const {
@@ -433,58 +431,6 @@ RenderScene::RenderScene(SceneDesc desc) : impl_(std::make_unique<Impl>()) {
 
 RenderScene::~RenderScene() = default;
 
-namespace {
-
-void fillRay(RTCRay& r, const Ray& ray) {
-  r.org_x = ray.origin.x;
-  r.org_y = ray.origin.y;
-  r.org_z = ray.origin.z;
-  r.dir_x = ray.direction.x;
-  r.dir_y = ray.direction.y;
-  r.dir_z = ray.direction.z;
-  r.tnear = ray.tMin;
-  r.tfar = ray.tMax;
-  r.mask = 0xFFFFFFFFu;
-}
-
-}  // namespace
-
-std::optional<SurfaceHit> RenderScene::Impl::hitOf(const RTCRayHit& rh, const Vec3f& dir) const {
-  // Embree's float arithmetic can overflow on extreme geometry (fuzz_gltf: a
-  // hit at t = inf through an instance): a hit that is not finite is no hit.
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !std::isfinite(rh.ray.tfar)) return std::nullopt;
-  // Instanced hits name the top-level instance in instID; baked ones in geomID.
-  const unsigned topId = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
-  SurfaceHit hit = hitAt(records[topId], rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, dir);
-  if (!isFinite(hit.position)) return std::nullopt;
-  return hit;
-}
-
-void RenderScene::intersectCoherent(std::span<const Ray> rays,
-                                    std::span<std::optional<SurfaceHit>> hits) const {
-  // Stochastic transparency keys each ray in its query context: one context
-  // per ray then (rare: a blending material).
-  if (impl_->blendMasks || rays.size() < 2) {
-    for (std::size_t k = 0; k < rays.size(); ++k) hits[k] = intersect(rays[k]);
-    return;
-  }
-  thread_local std::vector<RTCRayHit> buffer;
-  buffer.resize(rays.size());
-  for (std::size_t k = 0; k < rays.size(); ++k) {
-    RTCRayHit& rh = buffer[k];
-    rh = RTCRayHit{};
-    fillRay(rh.ray, rays[k]);
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  }
-  QueryContext context;
-  rtcInitIntersectContext(&context.embree);
-  context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  rtcIntersect1M(impl_->top.get(), &context.embree, buffer.data(), static_cast<unsigned>(rays.size()),
-                 sizeof(RTCRayHit));
-  for (std::size_t k = 0; k < rays.size(); ++k) hits[k] = impl_->hitOf(buffer[k], rays[k].direction);
-}
-
 std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
   QueryContext context;
   rtcInitIntersectContext(&context.embree);
@@ -502,7 +448,15 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(impl_->top.get(), &context.embree, &rh);
-  return impl_->hitOf(rh, ray.direction);
+  // Embree's float arithmetic can overflow on extreme geometry (fuzz_gltf: a
+  // hit at t = inf through an instance): a hit that is not finite is no hit.
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !std::isfinite(rh.ray.tfar)) return std::nullopt;
+  // Instanced hits name the top-level instance in instID; baked ones in geomID.
+  const unsigned topId = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
+  SurfaceHit hit =
+      impl_->hitAt(impl_->records[topId], rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.direction);
+  if (!isFinite(hit.position)) return std::nullopt;
+  return hit;
 }
 
 bool RenderScene::occluded(const Ray& ray) const {

@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <span>
 
 #include "core/ray.h"
 #include "core/vec.h"
@@ -50,10 +49,6 @@ class RenderScene {
 
   // Closest hit in (ray.tMin, ray.tMax); alpha-masked texels are skipped.
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
-  // The closest hits of a batch of coherent rays (a camera's, in film order),
-  // the same as intersect() ray by ray: one Embree stream call, which traces
-  // them in packets. hits.size() == rays.size().
-  void intersectCoherent(std::span<const Ray> rays, std::span<std::optional<SurfaceHit>> hits) const;
   // True when anything blocks the segment (ray.tMin, ray.tMax).
   bool occluded(const Ray& ray) const;
 

@@ -5,9 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <optional>
-#include <span>
 #include <string>
 #include <thread>
 #include <utility>
@@ -404,78 +402,6 @@ TEST(RenderScene, RejectsNonFinitePositions) {
   SceneDesc d = oneQuad();
   d.meshes[0].positions[2].y = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(RenderScene{std::move(d)}, InputError);
-}
-
-// A bumpy 32x32 heightfield: many small triangles at many angles.
-Mesh bumpyGrid() {
-  Mesh m;
-  m.name = "bumps";
-  constexpr int kN = 32;
-  for (int j = 0; j <= kN; ++j)
-    for (int i = 0; i <= kN; ++i) {
-      const float x = -1 + 2.0f * float(i) / kN, y = -1 + 2.0f * float(j) / kN;
-      m.positions.push_back({x, y, 0.3f * std::sin(5 * x) * std::cos(4 * y)});
-      m.uvs.push_back({float(i) / kN, float(j) / kN});
-    }
-  for (int j = 0; j < kN; ++j)
-    for (int i = 0; i < kN; ++i) {
-      const std::uint32_t a = std::uint32_t(j * (kN + 1) + i), b = a + 1, c = a + kN + 1, e = c + 1;
-      m.indices.insert(m.indices.end(), {a, b, e, a, e, c});
-    }
-  return m;
-}
-
-// The renderer traces each batch of camera rays as one coherent stream: it must
-// find the very hits (same bits) that intersect() finds ray by ray, on baked
-// and on instanced geometry, hits and misses, in batches of any size.
-TEST(RenderScene, CoherentBatchFindsTheSameHitsAsSingleRays) {
-  SceneDesc d;
-  d.sourceFile = "test.gltf";
-  d.meshes.push_back(bumpyGrid());
-  d.meshes.push_back(bumpyGrid());
-  d.instances.push_back({0, Transform::translate({-1.2f, 0, 0})});  // mesh 0 twice: Embree instances
-  d.instances.push_back({0, Transform::translate({1.2f, 0, 0}) *
-                                Transform::rotateQuaternion(0, 0, std::sin(0.15), std::cos(0.15))});
-  d.instances.push_back(
-      {1, Transform::translate({0, 2.1f, -0.5f}) * Transform::scale({1.5f, 1, 1})});  // baked
-  const RenderScene scene(std::move(d));
-  ASSERT_EQ(scene.stats().embreeInstances, 2);
-  ASSERT_EQ(scene.stats().bakedGeometries, 1);
-  std::vector<Ray> rays;
-  for (int j = 0; j < 24; ++j)
-    for (int i = 0; i < 32; ++i) {
-      const Vec3f dir =
-          normalize(Vec3f{-0.6f + 1.2f * (i + 0.37f) / 32, -0.5f + 1.2f * (j + 0.61f) / 24, -1});
-      rays.push_back({{0.01f, 0.02f, 3}, dir});
-    }
-  int hits = 0;
-  for (const std::size_t batch : {std::size_t{256}, std::size_t{7}, std::size_t{1}}) {
-    std::vector<std::optional<SurfaceHit>> got(rays.size());
-    for (std::size_t first = 0; first < rays.size(); first += batch) {
-      const std::size_t n = std::min(batch, rays.size() - first);
-      scene.intersectCoherent(std::span(rays).subspan(first, n), std::span(got).subspan(first, n));
-    }
-    for (std::size_t k = 0; k < rays.size(); ++k) {
-      const std::optional<SurfaceHit> want = scene.intersect(rays[k]);
-      ASSERT_EQ(got[k].has_value(), want.has_value()) << "ray " << k << " batch " << batch;
-      if (!want) continue;
-      ++hits;
-      const auto bits = [](const auto& v) {
-        std::vector<unsigned char> b(sizeof v);
-        std::memcpy(b.data(), &v, sizeof v);
-        return b;
-      };
-      EXPECT_EQ(bits(got[k]->t), bits(want->t)) << "ray " << k;
-      EXPECT_EQ(bits(got[k]->position), bits(want->position)) << "ray " << k;
-      EXPECT_EQ(bits(got[k]->shadingNormal), bits(want->shadingNormal)) << "ray " << k;
-      EXPECT_EQ(bits(got[k]->geometricNormal), bits(want->geometricNormal)) << "ray " << k;
-      EXPECT_EQ(bits(got[k]->uv), bits(want->uv)) << "ray " << k;
-      EXPECT_EQ(got[k]->instance, want->instance);
-      EXPECT_EQ(got[k]->primitive, want->primitive);
-    }
-  }
-  EXPECT_GT(hits, 3 * 500);  // most rays hit, some miss
-  EXPECT_LT(hits, 3 * int(rays.size()));
 }
 
 }  // namespace
