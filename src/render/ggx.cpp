@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <mutex>
 
 #include "core/constants.h"
+#include "render/lazy_rows.h"
 
 namespace lensrt::ggx {
 namespace {
@@ -50,19 +49,8 @@ class AlbedoTable {
 
  private:
   AlbedoTable() = default;
-  // Rows i and i + 1, built once (thread-safe): one acquire load once built.
   void ensureRows(int i) const {
-    if (!pairReady_[i].load(std::memory_order_acquire)) buildRows(i);
-  }
-  // Kept out of line so that the lookups stay small.
-  [[gnu::noinline]] void buildRows(int i) const {
-    const std::scoped_lock lock(mutex_);
-    for (const int ia : {i, i + 1}) {
-      if (built_[ia]) continue;
-      buildRow(ia);
-      built_[ia] = true;
-    }
-    pairReady_[i].store(true, std::memory_order_release);
+    rows_.ensure(i, [this](int row) { buildRow(row); });
   }
   void buildRow(int ia) const {
     constexpr int kStrata = 24;
@@ -91,9 +79,7 @@ class AlbedoTable {
     avgOne_[ia] = float(2 * sumOne / (kN - 1));
     avgSchlick_[ia] = float(2 * sumSchlick / (kN - 1));
   }
-  mutable std::mutex mutex_;
-  mutable std::array<std::atomic<bool>, kN - 1> pairReady_{};  // rows i and i + 1 are built
-  mutable std::array<bool, kN> built_{};                       // under mutex_
+  LazyRows<kN> rows_;
   mutable float one_[kN][kN] = {};
   mutable float schlick_[kN][kN] = {};
   mutable float avgOne_[kN] = {};

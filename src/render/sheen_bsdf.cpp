@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <mutex>
 
 #include "core/constants.h"
 #include "render/ggx.h"
+#include "render/lazy_rows.h"
 
 namespace lensrt {
 namespace {
@@ -49,19 +48,8 @@ class SheenAlbedoTable {
 
  private:
   SheenAlbedoTable() = default;
-  // Rows i and i + 1, built once (thread-safe): one acquire load once built.
   void ensureRows(int i) const {
-    if (!pairReady_[i].load(std::memory_order_acquire)) buildRows(i);
-  }
-  // Kept out of line so that the lookups stay small.
-  [[gnu::noinline]] void buildRows(int i) const {
-    const std::scoped_lock lock(mutex_);
-    for (const int ir : {i, i + 1}) {
-      if (built_[ir]) continue;
-      buildRow(ir);
-      built_[ir] = true;
-    }
-    pairReady_[i].store(true, std::memory_order_release);
+    rows_.ensure(i, [this](int row) { buildRow(row); });
   }
   void buildRow(int ir) const {
     constexpr int kTheta = 64, kPhi = 32;
@@ -86,9 +74,7 @@ class SheenAlbedoTable {
       e_[ir][im] = std::min(1.0f, float(sum));
     }
   }
-  mutable std::mutex mutex_;
-  mutable std::array<std::atomic<bool>, kN - 1> pairReady_{};  // rows i and i + 1 are built
-  mutable std::array<bool, kN> built_{};                       // under mutex_
+  LazyRows<kN> rows_;
   mutable float e_[kN][kN] = {};
 };
 
