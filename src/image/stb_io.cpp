@@ -7,7 +7,10 @@
 #include <climits>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/error.h"
@@ -84,44 +87,60 @@ std::string encodePreview(const std::string& name, PreviewFormat format, int wid
 }
 
 // stb_image's Radiance decoder loops forever on a run-length scanline whose
-// count byte is 0 (it never advances; past the end of the data every byte
-// reads 0): the fuzzer found a 71-byte .hdr that hung `lensrt diff`. Walk the
-// run-length scanlines the way stb_image will and refuse such counts first.
-// Flat (old-style) data and other formats are left to stb_image.
+// count byte is 0: it never advances, and past the end of the data every byte
+// reads 0, so data ending inside such a scanline spins too. The fuzzer found
+// .hdr files that hung `lensrt diff`. Read the file exactly the way
+// stbi__hdr_load will (its header tokens, its resolution line, 0 past the
+// end) and refuse such counts first; whatever stb_image reports as an error or
+// decodes as flat (old-style) data is left to it.
 void checkRadianceRunLengths(std::string_view bytes, const std::string& name) {
   std::size_t pos = 0;
-  const auto line = [&] {
-    const std::size_t end = bytes.find('\n', pos);
-    if (end == std::string_view::npos) return std::string_view{};
-    const std::string_view l = bytes.substr(pos, end - pos);
-    pos = end + 1;
-    return l;
+  const auto get8 = [&]() -> int {  // stbi__get8
+    return pos < bytes.size() ? static_cast<unsigned char>(bytes[pos++]) : 0;
   };
-  for (int i = 0; i < 1024; ++i)  // header lines up to the empty one
-    if (line().empty()) break;
-  int height = 0, width = 0;
-  const std::string resolution(line());
-  if (std::sscanf(resolution.c_str(), "-Y %d +X %d", &height, &width) != 2) return;  // stb reports it
-  if (width < 8 || width >= 32768 || height <= 0) return;                            // flat data
-  const auto byte = [&]() -> int {
-    return pos < bytes.size() ? static_cast<unsigned char>(bytes[pos++]) : -1;
+  const auto atEof = [&] { return pos >= bytes.size(); };
+  const auto token = [&] {  // stbi__hdr_gettoken: a C string, so it ends at a NUL
+    constexpr std::size_t kBufferLength = 1024;
+    std::string t;
+    char c = char(get8());
+    while (!atEof() && c != '\n') {
+      t.push_back(c);
+      if (t.size() == kBufferLength - 1) {
+        while (!atEof() && get8() != '\n') {
+        }
+        break;
+      }
+      c = char(get8());
+    }
+    return std::string(t.c_str());
   };
+  if (const std::string id = token(); id != "#?RADIANCE" && id != "#?RGBE") return;
+  while (!token().empty()) {
+  }
+  const std::string resolution = token();
+  if (resolution.compare(0, 3, "-Y ") != 0) return;
+  char* rest = nullptr;
+  const int height = int(std::strtol(resolution.c_str() + 3, &rest, 10));
+  while (*rest == ' ') ++rest;
+  if (std::strncmp(rest, "+X ", 3) != 0) return;
+  const int width = int(std::strtol(rest + 3, nullptr, 10));
+  if (width < 8 || width >= 32768 || height <= 0 || height > (1 << 24)) return;  // flat data or an error
   for (int y = 0; y < height; ++y) {
-    const int c1 = byte(), c2 = byte(), len = byte();
-    if (c1 != 2 || c2 != 2 || len < 0 || (len & 0x80)) return;  // flat from here on
-    if (((len << 8) | byte()) != width) return;                 // stb reports it
+    const int c1 = get8(), c2 = get8(), high = get8();
+    if (c1 != 2 || c2 != 2 || (high & 0x80)) return;  // flat from here on
+    if (((high << 8) | get8()) != width) return;      // stb reports it
     for (int k = 0; k < 4; ++k)
       for (int x = 0; x < width;) {
-        int count = byte();
-        if (count < 0) throw InputError(name, "cannot decode image: the Radiance data ends early");
+        int count = get8();
         if (count > 128) {
           count -= 128;
-          if (byte() < 0) throw InputError(name, "cannot decode image: the Radiance data ends early");
+          get8();
         } else {
-          for (int j = 0; j < count; ++j)
-            if (byte() < 0) throw InputError(name, "cannot decode image: the Radiance data ends early");
+          for (int j = 0; j < count; ++j) get8();
         }
-        if (count == 0) throw InputError(name, "cannot decode image: a Radiance run of length 0");
+        if (count == 0)
+          throw InputError(name, pos >= bytes.size() ? "cannot decode image: the Radiance data ends early"
+                                                     : "cannot decode image: a Radiance run of length 0");
         if (count > width - x) return;  // stb reports it
         x += count;
       }
