@@ -24,6 +24,8 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <memory>
 #include <set>
 #include <vector>
@@ -197,44 +199,121 @@ std::vector<std::string> orderedChannels(const Imf::ChannelList& channels, const
 // claims before it reads it: an attribute claiming 1.8 GB in a 600-byte file
 // took the fuzzer's whole memory. Walk the header(s) first, with `read(pos,
 // n, out)` giving the file's bytes and `size` its length, and refuse sizes
-// past the end of the file.
+// past the end of the file. OpenEXR 3.1's C++ reader goes by the size field
+// only for strings, vectors and unknown types: the others it reads by their
+// type (a channel list up to its empty name, a preview by its width and
+// height), so a size that lies would put it out of step with this walk (the
+// fuzzer hid a 2 GB string behind such an attribute). Those sizes must be
+// exactly what the type reads.
+std::int64_t fixedAttributeSize(const std::string& type) {
+  static const std::map<std::string, std::int64_t> kSizes = {{"box2f", 16},
+                                                             {"box2i", 16},
+                                                             {"chromaticities", 32},
+                                                             {"compression", 1},
+                                                             {"deepImageState", 1},
+                                                             {"double", 8},
+                                                             {"envmap", 1},
+                                                             {"float", 4},
+                                                             {"int", 4},
+                                                             {"keycode", 28},
+                                                             {"lineOrder", 1},
+                                                             {"m33d", 72},
+                                                             {"m33f", 36},
+                                                             {"m44d", 128},
+                                                             {"m44f", 64},
+                                                             {"rational", 8},
+                                                             {"tiledesc", 9},
+                                                             {"timecode", 8},
+                                                             {"v2d", 16},
+                                                             {"v2f", 8},
+                                                             {"v2i", 8},
+                                                             {"v3d", 24},
+                                                             {"v3f", 12},
+                                                             {"v3i", 12}};
+  const auto it = kSizes.find(type);
+  return it == kSizes.end() ? -1 : it->second;
+}
+
 template <class Read>
 void checkHeaderSizes(const Read& read, std::uint64_t size, const std::string& name) {
   unsigned char version[4];
   if (size < 8 || !read(4, 4, version)) return;  // OpenEXR reports short files itself
   const bool multipart = (version[1] & 0x10) != 0;
   std::uint64_t pos = 8;
-  // Up to the null byte ending a name; nullopt at the end of the file.
+  // Up to the null byte ending a name; false at the end of the file.
+  constexpr std::size_t kMaxName = 255;  // Imf::Name::MAX_LENGTH
   const auto readName = [&](std::string& out) {
     out.clear();
     unsigned char c = 0;
-    while (pos < size && out.size() <= 256) {
+    while (pos < size) {
       if (!read(pos++, 1, &c)) return false;
       if (c == 0) return true;
+      if (out.size() == kMaxName)
+        throw InputError(name, "a header name is longer than " + std::to_string(kMaxName) + " characters");
       out.push_back(char(c));
     }
     return false;
   };
-  std::string attribute, type;
+  const auto readUint32 = [&](std::uint32_t& out) {
+    unsigned char b[4];
+    if (pos + 4 > size || !read(pos, 4, b)) return false;
+    out = std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
+          std::uint32_t(b[3]) << 24;
+    pos += 4;
+    return true;
+  };
+  std::string attribute, type, channel;
   for (int header = 0; header < 1024; ++header) {
     if (!readName(attribute)) return;
     if (attribute.empty()) return;  // the end of the headers
     for (int count = 0; !attribute.empty(); ++count) {
-      if (count > 100000 || !readName(type)) return;
-      unsigned char b[4];
-      if (pos + 4 > size || !read(pos, 4, b)) return;
-      const std::int64_t bytes = std::int32_t(std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 |
-                                              std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24);
-      pos += 4;
+      std::uint32_t claimed = 0;
+      if (count > 100000 || !readName(type) || !readUint32(claimed)) return;
+      const std::int64_t bytes = std::int32_t(claimed);
+      const auto refuse = [&](const std::string& what) {
+        throw InputError(name, "header attribute '" + oneLine(attribute) + "' " + what);
+      };
       if (bytes < 0 || std::uint64_t(bytes) > size - pos)
-        throw InputError(name, "header attribute '" + oneLine(attribute) + "' claims " +
-                                   std::to_string(bytes) + " bytes, more than the file has left");
-      pos += std::uint64_t(bytes);
+        refuse("claims " + std::to_string(bytes) + " bytes, more than the file has left");
+      const std::uint64_t start = pos, end = pos + std::uint64_t(bytes);
+      if (const std::int64_t fixed = fixedAttributeSize(type); fixed >= 0) {
+        if (bytes != fixed)
+          refuse("of type " + oneLine(type) + " has " + std::to_string(bytes) + " bytes, not " +
+                 std::to_string(fixed));
+      } else if (type == "chlist") {
+        // Name, pixel type, pLinear and reserved bytes, x and y sampling.
+        for (int n = 0;; ++n) {
+          if (n > 100000 || !readName(channel)) return;
+          if (channel.empty()) break;
+          pos += 16;
+          if (pos > end) break;
+        }
+        if (pos != end)
+          refuse("has a channel list that does not fill its " + std::to_string(bytes) + " bytes");
+      } else if (type == "preview") {
+        std::uint32_t width = 0, height = 0;
+        if (bytes < 8 || !readUint32(width) || !readUint32(height) ||
+            std::uint64_t(width) * height * 4 != std::uint64_t(bytes) - 8)
+          refuse("has a preview image whose size does not match its " + std::to_string(bytes) + " bytes");
+      } else if (type == "stringvector") {
+        // Each string's own length, within the attribute.
+        while (pos < end) {
+          std::uint32_t length = 0;
+          if (end - pos < 4 || !readUint32(length) || length > end - pos)
+            refuse("has a string longer than its " + std::to_string(bytes) + " bytes");
+          pos += length;
+        }
+      } else if (type == "idmanifest") {
+        refuse("is an ID manifest, which lensrt does not read");
+      }
+      pos = start + std::uint64_t(bytes);
       if (!readName(attribute)) return;
     }
     if (!multipart) return;
   }
 }
+
+using ReadBytes = std::function<bool(std::uint64_t pos, std::size_t n, unsigned char* out)>;
 
 Image decode(Imf::IStream& stream, const std::string& name, ImageMetadata* metadata, std::size_t maxValues) {
   try {
@@ -345,25 +424,24 @@ Image readExrFile(const std::filesystem::path& file, ImageMetadata* metadata, st
     std::ifstream in(file, std::ios::binary);
     in.seekg(0, std::ios::end);
     const auto size = std::uint64_t(std::max<std::streamoff>(0, in.tellg()));
-    checkHeaderSizes(
-        [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
-          in.seekg(std::streamoff(pos));
-          return bool(in.read(reinterpret_cast<char*>(out), std::streamsize(n)));
-        },
-        size, file.string());
+    const ReadBytes read = [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
+      in.clear();
+      in.seekg(std::streamoff(pos));
+      return bool(in.read(reinterpret_cast<char*>(out), std::streamsize(n)));
+    };
+    checkHeaderSizes(read, size, file.string());
   }
   return decode(*stream, file.string(), metadata, maxValues);
 }
 
 Image decodeExr(std::string_view bytes, const std::string& name, ImageMetadata* metadata,
                 std::size_t maxValues) {
-  checkHeaderSizes(
-      [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
-        if (pos > bytes.size() || n > bytes.size() - pos) return false;
-        std::memcpy(out, bytes.data() + pos, n);
-        return true;
-      },
-      bytes.size(), name);
+  const ReadBytes read = [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
+    if (pos > bytes.size() || n > bytes.size() - pos) return false;
+    std::memcpy(out, bytes.data() + pos, n);
+    return true;
+  };
+  checkHeaderSizes(read, bytes.size(), name);
   MemoryIStream stream(bytes, name);
   return decode(stream, name, metadata, maxValues);
 }

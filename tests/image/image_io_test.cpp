@@ -267,6 +267,43 @@ TEST(ImageIo, ExrAttributeLargerThanTheFileIsRefused) {
   }
 }
 
+// OpenEXR's C++ reader takes most attributes by their type, not by their
+// size field (the fuzzer hid 2 GB strings behind a channel list and a
+// compression attribute whose sizes lied): such sizes must be exact, a
+// preview's pixels must fill it, and names stop at 255 characters.
+TEST(ImageIo, ExrHeaderWalkFollowsOpenExrsReaders) {
+  const auto u32 = [](std::uint32_t v) {
+    std::string b(4, '\0');
+    for (int i = 0; i < 4; ++i) b[std::size_t(i)] = char((v >> (8 * i)) & 0xff);
+    return b;
+  };
+  const auto attribute = [&](const std::string& name, const std::string& type, std::uint32_t size,
+                             const std::string& value) {
+    return name + '\0' + type + '\0' + u32(size) + value;
+  };
+  const std::string magic = std::string("\x76\x2f\x31\x01", 4) + u32(2);
+  const std::string channel = std::string("R") + '\0' + u32(2) + u32(0) + u32(1) + u32(1);
+  const std::string hidden = magic + attribute("channels", "chlist", 1, channel + '\0') +
+                             attribute("comment", "string", 0x70000000u, "") + '\0';
+  const std::string preview = magic + attribute("preview", "preview", 8, u32(60000) + u32(60000)) + '\0';
+  const std::string longName = magic + attribute(std::string(300, 'n'), "int", 4, u32(0)) + '\0';
+  const std::string compression =
+      magic + attribute("squeeze", "compression", 256, std::string(256, '\0')) + '\0';
+  const std::pair<std::string, std::string> cases[] = {
+      {hidden, "'channels' has a channel list that does not fill its 1 bytes"},
+      {compression, "'squeeze' of type compression has 256 bytes, not 1"},
+      {preview, "'preview' has a preview image whose size does not match its 8 bytes"},
+      {longName, "longer than 255 characters"}};
+  for (const auto& [bytes, message] : cases) {
+    try {
+      decodeImage(bytes, "walk.exr", nullptr, 1u << 22);
+      ADD_FAILURE() << "accepted: " << message;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+}
+
 // Radiance run-length data: runs and literal chunks decode (RGBE 128,64,32,
 // exponent 129 is 1.0, 0.5, 0.25), a chunk of length 0 (on which stb_image
 // spins forever) and data ending early are refused, however stb_image
