@@ -51,6 +51,8 @@ LensSystem::LensSystem(LensPrescription prescription, std::optional<Coating> coa
     t.etaFromScene = ndBefore / t.ndAfter;
     t.refracts = !t.isStop && t.ndAfter != ndBefore;
     surfaces_.push_back(t);
+    spheres_.push_back(
+        {t.z, t.radius, t.absInvRadius, t.invRadius2, t.apertureRadius2, t.refracts ? t.etaFromFilm : 0.0});
     z += s.thickness;
     ndBefore = t.ndAfter;
   }
@@ -258,12 +260,7 @@ void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<const do
 void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
                                          std::span<std::optional<LensRay>> out) const {
   static_assert(kTraceLanes == trace_lanes::kLanes);
-  std::vector<trace_lanes::Sphere> spheres(surfaces_.size());
-  for (std::size_t i = 0; i < surfaces_.size(); ++i) {
-    const TraceSurface& s = surfaces_[i];
-    spheres[i] = {s.z,          s.radius,          s.absInvRadius,
-                  s.invRadius2, s.apertureRadius2, s.refracts ? s.etaFromFilm : 0.0};
-  }
+  const std::vector<trace_lanes::Sphere>& spheres = spheres_;
   for (std::size_t first = 0; first < rays.size(); first += kTraceLanes) {
     const std::size_t lanes = std::min(kTraceLanes, rays.size() - first);
     trace_lanes::Lanes L;  // lanes past `lanes` stay dead

@@ -19,6 +19,7 @@
 #include "optics/glass.h"
 #include "optics/paraxial.h"
 #include "optics/prescription.h"
+#include "optics/trace_lanes.h"
 
 namespace lensrt {
 
@@ -106,6 +107,9 @@ class LensSystem {
   LensPrescription prescription_;
   ParaxialData paraxial_;
   std::vector<TraceSurface> surfaces_;
+  // The same surfaces as the batched trace takes them, built once here
+  // rather than on every batch of rays.
+  std::vector<trace_lanes::Sphere> spheres_;
   bool hasAspheres_ = false;
   std::optional<Coating> coating_;
 };
