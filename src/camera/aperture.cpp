@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/constants.h"
+#include "core/sampling.h"
 
 namespace lensrt {
 
@@ -27,18 +28,9 @@ Aperture::Aperture(double radius, const ApertureShape& shape) : shape_(shape) {
 
 Vec2d Aperture::sample(const Vec2d& u) const {
   if (shape_.blades == 0) {
-    // Concentric mapping (Shirley-Chiu): keeps the sampler's stratification.
-    const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
-    if (a == 0.0 && b == 0.0) return {0.0, 0.0};
-    double r, phi;
-    if (std::abs(a) > std::abs(b)) {
-      r = a;
-      phi = (kPi / 4.0) * (b / a);
-    } else {
-      r = b;
-      phi = kPi / 2.0 - (kPi / 4.0) * (a / b);
-    }
-    return {circumradius_ * r * std::cos(phi), circumradius_ * r * std::sin(phi)};
+    // The sampler's values are floats, so the float map loses nothing of u.
+    const Vec2f d = concentricDisk({float(u.x), float(u.y)});
+    return {circumradius_ * double(d.x), circumradius_ * double(d.y)};
   }
   // Equal-area sectors: pick one with u.x, reuse its fraction, then uniform in
   // the triangle (centre, vertex k, vertex k+1).

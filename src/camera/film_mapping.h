@@ -27,10 +27,13 @@ inline double sensorHalfDiagonalMm(const FilmGeometry& f) {
   return 0.5 * std::hypot(f.sensorWidthMm, f.sensorHeightMm);
 }
 
-// Film-point cosine to the axis of a ray from a film point offset `r` (mm) to
-// a pupil point straight ahead at axial distance `dz`: cos(theta).
-inline double cosToAxis(double r, double dz) {
-  return dz / std::sqrt(dz * dz + r * r);
+// cos^4 of the angle to the axis of a ray from a film point offset (x, y)
+// (mm) to a pupil point straight ahead at axial distance `dz`: the natural
+// vignetting of an ideal lens, without hypot or a square root (a camera ray's
+// cost).
+inline double cos4ToAxis(double x, double y, double dz) {
+  const double c2 = dz * dz / (dz * dz + x * x + y * y);
+  return c2 * c2;
 }
 
 }  // namespace lensrt

@@ -54,6 +54,8 @@ ThickLensCamera::ThickLensCamera(const Transform& worldFromCamera, const FilmGeo
   const double lxp = filmZ_ - params.exitPupilZ;
   if (!(lxp > 0.0)) throw std::invalid_argument("thick lens: the exit pupil lies behind the film");
   onAxisWeight_ = exposureScale(exposure, params.fNumber) * exitPupil_.area() / (lxp * lxp);
+  toRearPrincipal_ = (params.rearPrincipalZ - filmZ_) / (params.exitPupilZ - filmZ_);
+  filmToExitPupil_ = lxp;
 }
 
 std::string ThickLensCamera::describe() const {
@@ -81,7 +83,7 @@ std::optional<CameraRay> ThickLensCamera::generateCameraSpaceRay(const CameraSam
   const Vec2d e = exitPupil_.sample({s.lens.x, s.lens.y});
   const Vec3d q{e.x, e.y, P.exitPupilZ};
   // Where the image-side ray crosses H'; it leaves H at the same height.
-  const Vec3d a = p + (q - p) * ((P.rearPrincipalZ - filmZ_) / (q.z - filmZ_));
+  const Vec3d a = p + (q - p) * toRearPrincipal_;
   const Vec3d origin{a.x, a.y, P.frontPrincipalZ};
   Vec3d dir;
   if (P.dispersion) {
@@ -95,9 +97,7 @@ std::optional<CameraRay> ThickLensCamera::generateCameraSpaceRay(const CameraSam
     const double k = u_ / v_;
     dir = Vec3d{up.x * k, up.y * k, P.frontPrincipalZ - u_} - origin;
   }
-  const double lxp = filmZ_ - P.exitPupilZ;
-  const double c = cosToAxis(std::hypot(up.x, up.y), lxp);
-  const float weight = float(onAxisWeight_ * c * c * c * c);
+  const float weight = float(onAxisWeight_ * cos4ToAxis(up.x, up.y, filmToExitPupil_));
   const Vec3d o = Vec3d{origin.x, origin.y, origin.z - P.entrancePupilZ} * 1e-3;
   return CameraRay{Ray{Vec3f(o), Vec3f(normalize(dir))}, weight};
 }

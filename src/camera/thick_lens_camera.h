@@ -72,6 +72,9 @@ class ThickLensCamera final : public Camera {
   Aperture exitPupil_;
   double u_ = 0.0, v_ = 0.0, filmZ_ = 0.0;
   double onAxisWeight_ = 0.0;
+  // Per camera, not per ray: where along film -> exit pupil the ray crosses
+  // H' (a fraction), and the film's distance to the exit pupil.
+  double toRearPrincipal_ = 0.0, filmToExitPupil_ = 0.0;
 };
 
 }  // namespace lensrt

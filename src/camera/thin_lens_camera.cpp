@@ -63,8 +63,7 @@ std::optional<CameraRay> ThinLensCamera::generateCameraSpaceRay(const CameraSamp
     const double k = focusMm_ / v_;  // to the focus plane Z = -s
     dir = Vec3d{up.x * k - q.x, up.y * k - q.y, -focusMm_};
   }
-  const double c = cosToAxis(std::hypot(up.x, up.y), v_);
-  const float weight = float(onAxisWeight_ * c * c * c * c);
+  const float weight = float(onAxisWeight_ * cos4ToAxis(up.x, up.y, v_));
   return CameraRay{Ray{{float(q.x * 1e-3), float(q.y * 1e-3), 0.0f}, Vec3f(normalize(dir))}, weight};
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/constants.h"
+#include "core/sampling.h"
 #include "render/lazy_rows.h"
 
 namespace lensrt::ggx {
@@ -131,19 +132,8 @@ float schlickWeight(float cosTheta) {
 }
 
 Vec3f cosineHemisphere(const Vec2f& u) {
-  const float a = 2 * u.x - 1, b = 2 * u.y - 1;
-  float r = 0, phi = 0;
-  if (a != 0 || b != 0) {
-    if (std::abs(a) > std::abs(b)) {
-      r = a;
-      phi = (kPiF / 4) * (b / a);
-    } else {
-      r = b;
-      phi = kPiF / 2 - (kPiF / 4) * (a / b);
-    }
-  }
-  const float x = r * std::cos(phi), y = r * std::sin(phi);
-  return {x, y, std::sqrt(std::max(0.0f, 1 - x * x - y * y))};
+  const Vec2f d = concentricDisk(u);  // Malley: project the disk up
+  return {d.x, d.y, std::sqrt(std::max(0.0f, 1 - d.x * d.x - d.y * d.y))};
 }
 
 AlbedoTerms specularAlbedo(float alpha, float mu) {
