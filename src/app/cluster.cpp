@@ -1,7 +1,10 @@
 #include "app/cluster.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #if LENSRT_WITH_MPI
 #include <mpi.h>
@@ -10,11 +13,13 @@
 namespace lensrt {
 namespace {
 
-// Set by Open MPI's mpirun, by PMI/PMIx launchers (srun, MPICH's hydra).
-bool startedByMpiLauncher() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
-    if (std::getenv(name)) return true;
-  return false;
+// A launcher's variable as a count or rank; -1 when absent or not a number.
+int number(const std::function<const char*(const char*)>& getenv, const char* name) {
+  const char* text = getenv(name);
+  if (!text || !*text) return -1;
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  return *end == '\0' && value >= 0 && value <= 1 << 30 ? int(value) : -1;
 }
 
 }  // namespace
@@ -23,10 +28,31 @@ bool Cluster::builtWithMpi() {
   return LENSRT_WITH_MPI != 0;
 }
 
+std::string Cluster::refusal(const std::optional<Launch>& l, bool withMpi) {
+  if (withMpi || !l || (l->size <= 1 && l->rank == 0)) return {};
+  return (l->size > 1 ? "started as one of " + std::to_string(l->size) + " processes"
+                      : "started as process " + std::to_string(l->rank)) +
+         " of an MPI job, but this lensrt was built without MPI: every process would render the whole "
+         "image alone (install libopenmpi-dev and build again, or run lensrt without mpirun)";
+}
+
+std::optional<Cluster::Launch> Cluster::launch(const std::function<const char*(const char*)>& getenv) {
+  // Open MPI's mpirun; MPICH's hydra (PMI); PMIx launchers, whose size Slurm gives.
+  const std::pair<const char*, const char*> launchers[] = {{"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK"},
+                                                           {"PMI_SIZE", "PMI_RANK"},
+                                                           {"SLURM_NTASKS", "PMIX_RANK"}};
+  for (const auto& [sizeName, rankName] : launchers) {
+    const int size = number(getenv, sizeName), rank = number(getenv, rankName);
+    if (rank < 0 && (size < 0 || sizeName == std::string_view("SLURM_NTASKS"))) continue;
+    return Launch{std::max(size, 0), std::max(rank, 0)};
+  }
+  return std::nullopt;
+}
+
 #if LENSRT_WITH_MPI
 
 Cluster::Cluster(int& argc, char**& argv) {
-  if (!startedByMpiLauncher()) return;
+  if (!launch(std::getenv)) return;
   // Only the main thread calls MPI (the render threads never do).
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
@@ -74,7 +100,11 @@ void Cluster::abort(int status) const {
 
 #else
 
-Cluster::Cluster(int&, char**&) {}
+Cluster::Cluster(int&, char**&) {
+  const std::optional<Launch> l = launch(std::getenv);
+  unsupportedLaunch_ = refusal(l, false);
+  if (!unsupportedLaunch_.empty()) rank_ = l->rank;  // rank 0 alone says it
+}
 Cluster::~Cluster() = default;
 
 std::optional<Cluster::Failure> Cluster::agree(const std::optional<Failure>& mine) {

@@ -4,6 +4,7 @@
 // always a job of one.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -17,6 +18,24 @@ class Cluster {
   Cluster& operator=(const Cluster&) = delete;
 
   static bool builtWithMpi();
+
+  // What an MPI launcher told this process through its environment (Open
+  // MPI's mpirun, MPICH's hydra, PMIx and Slurm's srun): the job's size (0
+  // when the launcher does not say) and this process's rank. Empty when no
+  // launcher started it.
+  struct Launch {
+    int size = 0;
+    int rank = 0;
+  };
+  static std::optional<Launch> launch(const std::function<const char*(const char*)>& getenv);
+
+  // The error of a process that cannot take part in the job it was started
+  // in, empty when it can: a build without MPI, started as one of several
+  // processes, would render the whole image in each of them, all writing the
+  // same output.
+  static std::string refusal(const std::optional<Launch>& launch, bool withMpi);
+  // refusal() for this process.
+  const std::string& unsupportedLaunch() const { return unsupportedLaunch_; }
   int rank() const { return rank_; }
   int size() const { return size_; }
   bool isMain() const { return rank_ == 0; }
@@ -41,6 +60,7 @@ class Cluster {
  private:
   int rank_ = 0, size_ = 1;
   bool initialized_ = false, agreed_ = false;
+  std::string unsupportedLaunch_;
 };
 
 }  // namespace lensrt

@@ -114,6 +114,10 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (!cluster.unsupportedLaunch().empty()) {
+    if (cluster.isMain()) fmt::print(stderr, "lensrt: error: {}\n", cluster.unsupportedLaunch());
+    return 2;
+  }
   // `render` and `compare` are shared between the ranks of an MPI job; other
   // commands run on rank 0 alone.
   const bool shared =
