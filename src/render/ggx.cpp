@@ -34,11 +34,7 @@ class AlbedoTable {
     const int i = std::min(int(a), kN - 2), j = std::min(int(m), kN - 2);
     ensureRows(i);
     const float s = a - float(i), t = m - float(j);
-    const auto bilerp = [&](const float(&v)[kN][kN]) {
-      return (v[i][j] * (1 - t) + v[i][j + 1] * t) * (1 - s) +
-             (v[i + 1][j] * (1 - t) + v[i + 1][j + 1] * t) * s;
-    };
-    return {bilerp(one_), bilerp(schlick_)};
+    return {bilerp(one_, i, j, s, t), bilerp(schlick_, i, j, s, t)};
   }
   AlbedoTerms average(float alpha) const {
     const float a = std::clamp(alpha, 0.0f, 1.0f) * (kN - 1);

@@ -9,6 +9,13 @@
 
 namespace lensrt {
 
+// Bilinear lookup in a square table between rows i, i + 1 and columns j,
+// j + 1, at fractions s (rows) and t (columns): the albedo tables' lookup.
+template <int kN>
+float bilerp(const float (&v)[kN][kN], int i, int j, float s, float t) {
+  return (v[i][j] * (1 - t) + v[i][j + 1] * t) * (1 - s) + (v[i + 1][j] * (1 - t) + v[i + 1][j + 1] * t) * s;
+}
+
 template <int kRows>
 class LazyRows {
  public:

@@ -41,9 +41,7 @@ class SheenAlbedoTable {
     const float m = std::sqrt(std::clamp(mu, 0.0f, 1.0f)) * (kN - 1);
     const int i = std::min(int(a), kN - 2), j = std::min(int(m), kN - 2);
     ensureRows(i);
-    const float s = a - float(i), t = m - float(j);
-    return (e_[i][j] * (1 - t) + e_[i][j + 1] * t) * (1 - s) +
-           (e_[i + 1][j] * (1 - t) + e_[i + 1][j + 1] * t) * s;
+    return bilerp(e_, i, j, a - float(i), m - float(j));
   }
 
  private:
