@@ -11,6 +11,7 @@
 #include "app/lens_loading.h"
 #include "app/option_checks.h"
 #include "camera/lens_camera.h"
+#include "camera/orthographic_camera.h"
 #include "camera/pinhole_camera.h"
 #include "camera/thick_lens_camera.h"
 #include "camera/thin_lens_camera.h"
@@ -201,8 +202,25 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
 std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& gltf, FilmGeometry rasterFilm,
                                    const HitDistance& hitDistance, Warnings& warnings) {
   const FilmGeometry film = cameraFilm(o, rasterFilm.width, rasterFilm.height);
-  if (gltf.orthographic)
-    warnings.warn("camera '" + gltf.name + "' is orthographic; rendering it in perspective");
+  if (gltf.orthographic) {
+    // Parallel rays are the pinhole model's radiance film without a lens; a
+    // lens (or what a lens defines: a focal length, an exposure) makes a
+    // perspective picture.
+    const bool plain = o.model == "pinhole" && o.lens.empty() && !o.focalLengthMm && o.film != "irradiance" &&
+                       o.exposure != "physical";
+    if (plain) {
+      const double aspect = double(film.width) / film.height, glTFAspect = double(gltf.xmag) / gltf.ymag;
+      if (std::abs(aspect / glTFAspect - 1.0) > 0.01)
+        warnings.warn(
+            fmt::format("camera '{}' is orthographic with xmag/ymag {:.4g}, but the image's aspect "
+                        "ratio is {:.4g}: keeping ymag, the view is {:.4g} m wide",
+                        gltf.name, glTFAspect, aspect, 2.0 * gltf.ymag * aspect));
+      return std::make_unique<OrthographicCamera>(gltf.worldFromCamera, film, gltf.ymag);
+    }
+    warnings.warn("camera '" + gltf.name + "' is orthographic; --camera " + o.model +
+                  (o.model == "pinhole" ? " with a lens, a focal length or an irradiance film" : "") +
+                  " renders it in perspective");
+  }
 
   // Radiance film is the ideal pinhole's: a lens forms an image on a film, and
   // what reaches the film is irradiance (a mean radiance over the pupil would

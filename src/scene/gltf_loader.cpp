@@ -422,9 +422,19 @@ class Traversal {
       ctx_.fail("camera '" + cam.name + "' (node " + std::to_string(index) +
                 ") is placed beyond 1e15 (check the node transforms)");
     if (gc.type == "orthographic") {
-      cam.orthographic = true;
-      ctx_.warnings.warn("orthographic cameras are not supported: camera '" + cam.name +
-                         "' is kept but renders as a perspective camera (yfov 39.6 degrees)");
+      const tinygltf::OrthographicCamera& o = gc.orthographic;
+      // glTF: xmag and ymag must not be zero (a negative one mirrors nothing here).
+      const double xmag = std::abs(o.xmag), ymag = std::abs(o.ymag);
+      if (xmag > 0 && ymag > 0 && xmag < gltf::kMaxCoordinate && ymag < gltf::kMaxCoordinate) {
+        cam.orthographic = true;
+        cam.xmag = static_cast<float>(xmag);
+        cam.ymag = static_cast<float>(ymag);
+        cam.aspectRatio = static_cast<float>(xmag / ymag);
+      } else {
+        ctx_.warnings.warn("camera '" + cam.name +
+                           "': orthographic xmag and ymag must be non-zero; rendering it as a perspective "
+                           "camera (yfov 39.6 degrees)");
+      }
     } else {
       const tinygltf::PerspectiveCamera& p = gc.perspective;
       if (p.yfov > 0 && p.yfov < kPi)

@@ -139,6 +139,7 @@ struct CameraDesc {
   int node = -1;
   Transform worldFromCamera;  // looks down -Z, +Y up
   bool orthographic = false;
+  float xmag = 0.0f, ymag = 0.0f;    // half the view's width and height (orthographic), metres
   float yfov = 0.6911f;              // radians (perspective)
   std::optional<float> aspectRatio;  // width / height if the file gives one
   float znear = 0.01f;

@@ -215,9 +215,9 @@ TEST(GltfMaterial, UnsupportedFeaturesEachWarnOnce) {
                          "extra UV sets (TEXCOORD_2 and up) are ignored",
                          "vertex colours beyond COLOR_0 are ignored",
                          "morph targets are not supported: meshes render without them",
-                         "orthographic cameras are not supported: camera 'node 0' is kept but renders as a "
-                         "perspective camera (yfov 39.6 degrees)",
                      }));
+  EXPECT_FLOAT_EQ(d.cameras.at(0).xmag, 1.0f);
+  EXPECT_FLOAT_EQ(d.cameras.at(0).ymag, 1.0f);
 }
 
 TEST(GltfMaterial, LayerExtensionsLoadTheirFactorsAndTextures) {
