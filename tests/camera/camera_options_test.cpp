@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "camera/camera_test_util.h"
 #include "camera/pinhole_camera.h"
 #include "camera/thin_lens_camera.h"
 #include "core/constants.h"
@@ -22,13 +23,6 @@ CameraOptions withLens(const std::string& model) {
   o.lens = "dgauss-50mm";
   o.lensDir = std::string(LENSRT_SOURCE_DIR) + "/lenses";
   return o;
-}
-
-FilmGeometry raster(int w, int h) {
-  FilmGeometry f;
-  f.width = w;
-  f.height = h;
-  return f;
 }
 
 TEST(CameraOptions, ParsesSensorsAndShutterTimes) {
@@ -59,7 +53,7 @@ TEST(CameraOptions, CropsTheSensorToTheImageAspect) {
 
 TEST(CameraOptions, ThinLensTakesTheLensFocalLengthAndFNumber) {
   Warnings w;
-  const auto cam = makeCamera(withLens("thin"), CameraDesc{}, raster(64, 36), {}, w);
+  const auto cam = makeCamera(withLens("thin"), CameraDesc{}, test::rasterFilm(64, 36), {}, w);
   const ParaxialData p =
       computeParaxial(loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-50mm.dat"));
   const CameraInfo i = cam->info();
@@ -80,13 +74,13 @@ TEST(CameraOptions, PinholeGetsTheLensFieldOfViewAtItsFocus) {
   Warnings w;
   CameraOptions o = withLens("pinhole");
   o.focus = "inf";
-  const auto far = makeCamera(o, CameraDesc{}, raster(64, 36), {}, w);
+  const auto far = makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
   const double efl = far->info().focalLengthMm;
   const ParaxialData p =
       computeParaxial(loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-50mm.dat"));
   EXPECT_NEAR(efl, p.efl, 1e-6);
   o.focus = "0.5";
-  const auto near = makeCamera(o, CameraDesc{}, raster(64, 36), {}, w);
+  const auto near = makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
   const double yfovNear = dynamic_cast<const PinholeCamera&>(*near).yfov();
   const double yfovFar = dynamic_cast<const PinholeCamera&>(*far).yfov();
   EXPECT_LT(yfovNear, yfovFar) << "the field narrows as the lens focuses closer";
@@ -108,7 +102,7 @@ TEST(CameraOptions, AutoFocusUsesTheAxialDistanceOfWhatThePixelSees) {
     seen = r;
     return 3.0 / -r.direction.z;  // a wall 3 m in front, perpendicular to the axis
   };
-  const auto cam = makeCamera(o, CameraDesc{}, raster(64, 36), hit, w);
+  const auto cam = makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), hit, w);
   EXPECT_NEAR(cam->info().focusMetres, 3.0, 1e-4);
   EXPECT_LT(seen.direction.x, 0.0f);
   EXPECT_GT(seen.direction.y, 0.0f);
@@ -118,7 +112,7 @@ TEST(CameraOptions, UsageErrorsNameTheFlag) {
   Warnings w;
   const auto expectFlag = [&](CameraOptions o, const std::string& flag) {
     try {
-      makeCamera(o, CameraDesc{}, raster(64, 36), {}, w);
+      makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
       ADD_FAILURE() << "no error for " << flag;
     } catch (const CLI::ValidationError& e) {
       EXPECT_NE(std::string(e.what()).find(flag), std::string::npos) << e.what();
@@ -148,24 +142,25 @@ TEST(CameraOptions, FilmIsRadianceForThePinholeAndIrradianceOnRequest) {
   const double tanHalf = std::tan(30 * kPi / 180);
   const double cos2 = 1.0 / (1.0 + 2 * tanHalf * tanHalf);
 
-  const auto radiance = makeCamera(CameraOptions{}, gltf, raster(32, 32), {}, w);
+  const auto radiance = makeCamera(CameraOptions{}, gltf, test::rasterFilm(32, 32), {}, w);
   EXPECT_EQ(radiance->info().film, "radiance");
   EXPECT_EQ(cameraMetadata(*radiance).at("lensrt:film"), "radiance");
   EXPECT_EQ(radiance->generateRay(corner)->weight, 1.0f);
 
   CameraOptions irr;
   irr.film = "irradiance";
-  const auto irradiance = makeCamera(irr, gltf, raster(32, 32), {}, w);
+  const auto irradiance = makeCamera(irr, gltf, test::rasterFilm(32, 32), {}, w);
   EXPECT_EQ(cameraMetadata(*irradiance).at("lensrt:film"), "irradiance");
   EXPECT_NEAR(irradiance->generateRay(corner)->weight, cos2 * cos2, 1e-6);
 
   // Thin, thick and lens record irradiance, and say so.
   for (const char* model : {"thin", "thick", "lens"}) {
-    EXPECT_EQ(makeCamera(withLens(model), gltf, raster(32, 32), {}, w)->info().film, "irradiance") << model;
+    EXPECT_EQ(makeCamera(withLens(model), gltf, test::rasterFilm(32, 32), {}, w)->info().film, "irradiance")
+        << model;
     CameraOptions o = withLens(model);
     o.film = "radiance";
     try {
-      makeCamera(o, gltf, raster(32, 32), {}, w);
+      makeCamera(o, gltf, test::rasterFilm(32, 32), {}, w);
       ADD_FAILURE() << model << " accepted --film radiance";
     } catch (const CLI::ValidationError& e) {
       EXPECT_NE(std::string(e.what()).find("--film"), std::string::npos) << e.what();
@@ -174,9 +169,9 @@ TEST(CameraOptions, FilmIsRadianceForThePinholeAndIrradianceOnRequest) {
   // Physical exposure is a film irradiance: with the radiance film it is refused.
   CameraOptions physical;
   physical.exposure = "physical";
-  EXPECT_THROW(makeCamera(physical, gltf, raster(32, 32), {}, w), CLI::ValidationError);
+  EXPECT_THROW(makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w), CLI::ValidationError);
   physical.film = "irradiance";
-  EXPECT_NO_THROW(makeCamera(physical, gltf, raster(32, 32), {}, w));
+  EXPECT_NO_THROW(makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w));
 }
 
 }  // namespace

@@ -28,6 +28,13 @@ FilmGeometry testFilm() {
   return {640, 360, 36.0, 20.25};
 }
 
+FilmGeometry rasterFilm(int w, int h) {
+  FilmGeometry f;
+  f.width = w;
+  f.height = h;
+  return f;
+}
+
 std::optional<Ray> cameraRay(const Camera& camera, Vec2d raster, Vec2d lens, float wavelengthNm) {
   CameraSample s;
   s.film = {float(raster.x), float(raster.y)};

@@ -18,6 +18,9 @@ LensPrescription lectureDoubleGauss(double scale = 1.0);
 // A film of 56.25 um square pixels on a 36 x 20.25 mm sensor.
 FilmGeometry testFilm();
 
+// A raster of w x h pixels (the sensor left at its default).
+FilmGeometry rasterFilm(int w, int h);
+
 // The world-space ray for a raster position and lens sample (wavelength: the d line).
 std::optional<Ray> cameraRay(const Camera& camera, Vec2d raster, Vec2d lens, float wavelengthNm = 587.56f);
 

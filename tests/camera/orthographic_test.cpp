@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app/camera_options.h"
+#include "camera/camera_test_util.h"
 #include "camera/orthographic_camera.h"
 #include "camera/pinhole_camera.h"
 #include "camera/render_test_util.h"
@@ -15,16 +16,9 @@
 namespace lensrt {
 namespace {
 
-FilmGeometry raster(int w, int h) {
-  FilmGeometry f;
-  f.width = w;
-  f.height = h;
-  return f;
-}
-
 TEST(Orthographic, ParallelRaysOverTheView) {
   // A camera 5 m up +Z looking down -Z, as glTF places it.
-  const OrthographicCamera cam(Transform::translate({0, 0, 5}), raster(200, 100), 1.5);
+  const OrthographicCamera cam(Transform::translate({0, 0, 5}), test::rasterFilm(200, 100), 1.5);
   EXPECT_DOUBLE_EQ(cam.halfWidth(), 3.0);  // the image's aspect, square pixels
   for (const Vec2f& film : {Vec2f{0, 0}, Vec2f{200, 100}, Vec2f{100, 50}, Vec2f{37.5f, 81.25f}}) {
     const auto r = cam.generateRay(CameraSample{film, {0.5f, 0.5f}});
@@ -37,13 +31,13 @@ TEST(Orthographic, ParallelRaysOverTheView) {
   }
   EXPECT_EQ(cam.info().model, "orthographic");
   EXPECT_EQ(cam.describe(), "orthographic xmag=3 ymag=1.5 film=radiance");
-  EXPECT_THROW(OrthographicCamera(Transform(), raster(8, 8), 0.0), std::invalid_argument);
+  EXPECT_THROW(OrthographicCamera(Transform(), test::rasterFilm(8, 8), 0.0), std::invalid_argument);
 }
 
 // A 1 m square fills a quarter of a 2 m x 2 m view at 2 m and at 20 m alike
 // (a perspective camera would see it 100 times smaller by area at 20 m).
 TEST(Orthographic, SizeDoesNotDependOnDistance) {
-  const OrthographicCamera cam(Transform(), raster(64, 64), 1.0);
+  const OrthographicCamera cam(Transform(), test::rasterFilm(64, 64), 1.0);
   for (const float distance : {2.0f, 20.0f}) {
     const test::RenderedImage img =
         test::renderScene(test::squareScene(distance, 1.0f, 1.0f), cam, Environment(), 4);
@@ -62,14 +56,14 @@ TEST(Orthographic, ThePinholeModelRendersIt) {
   gltf.ymag = 1;
   Warnings w;
   CameraOptions o;
-  const auto cam = makeCamera(o, gltf, raster(80, 40), {}, w);
+  const auto cam = makeCamera(o, gltf, test::rasterFilm(80, 40), {}, w);
   const auto* ortho = dynamic_cast<const OrthographicCamera*>(cam.get());
   ASSERT_NE(ortho, nullptr);
   EXPECT_DOUBLE_EQ(ortho->halfWidth(), 2.0);
   EXPECT_TRUE(w.all().empty());
   // Another aspect ratio keeps ymag, and says so.
   Warnings square;
-  const auto wide = makeCamera(o, gltf, raster(40, 40), {}, square);
+  const auto wide = makeCamera(o, gltf, test::rasterFilm(40, 40), {}, square);
   EXPECT_DOUBLE_EQ(dynamic_cast<const OrthographicCamera&>(*wide).halfWidth(), 1.0);
   ASSERT_EQ(square.all().size(), 1u);
   EXPECT_NE(square.all().begin()->find("keeping ymag, the view is 2 m wide"), std::string::npos)
@@ -81,7 +75,7 @@ TEST(Orthographic, ThePinholeModelRendersIt) {
   withLens.focalLengthMm = 50;
   withLens.fNumber = 2;
   withLens.focus = "3";
-  const auto perspective = makeCamera(withLens, gltf, raster(80, 40), {}, thin);
+  const auto perspective = makeCamera(withLens, gltf, test::rasterFilm(80, 40), {}, thin);
   EXPECT_NE(dynamic_cast<const ThinLensCamera*>(perspective.get()), nullptr);
   EXPECT_EQ(thin.all(),
             (std::set<std::string>{"camera 'top' is orthographic; --camera thin renders it in perspective"}));
