@@ -73,12 +73,33 @@ Rgb emittedRadiance(const MaterialTable& materials, int index, const Vec2f& uv0,
 
 namespace {
 
+// A vertex TANGENT frame turned by the slot's KHR_texture_transform, as
+// faceTangent's frame from the uvs turns: the map's +u' on the surface is
+// dp/du' = (A^-1)_00 dp/du + (A^-1)_10 dp/dv for the transform's linear part
+// A, with dp/du along the tangent and dp/dv against the bitangent, of the
+// same length (the conformal parameterisation one tangent per vertex
+// implies). A mirror flips the handedness. The identity leaves it as it is.
+Vec4f transformedTangent(const Vec4f& tangent, const Vec3f& normal, const UvTransform& x) {
+  const float a = x.m[0], b = x.m[1], c = x.m[3], d = x.m[4];
+  if (a == 1 && b == 0 && c == 0 && d == 1) return tangent;
+  const float det = a * d - b * c;
+  if (!(std::abs(det) > 1e-12f)) return tangent;
+  const Vec3f dpdu = tangent.xyz();
+  const Vec3f dpdv = -cross(normal, dpdu) * (tangent.w < 0 ? -1.0f : 1.0f);
+  const Vec3f dpdu2 = (dpdu * d - dpdv * c) / det, dpdv2 = (dpdv * a - dpdu * b) / det;
+  if (!(lengthSquared(dpdu2) > 0) || !isFinite(dpdu2)) return tangent;
+  const Vec3f t = normalize(dpdu2);
+  const float w = dot(cross(normal, t), -dpdv2) < 0 ? -1.0f : 1.0f;
+  return {t.x, t.y, t.z, w};
+}
+
 // The normal n (unit, facing the viewer) perturbed by a tangent-space normal
 // map, or n itself when the slot or the tangent frame is missing.
 Vec3f mapNormal(const SceneDesc& scene, const SurfaceHit& hit, const TextureRef& ref, float scale, Vec3f n) {
   if (!ref.valid()) return n;
   const bool hasTangent = hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0;
-  const Vec4f tangent4 = hasTangent ? hit.tangent : faceTangent(scene, hit, ref);
+  const Vec4f tangent4 = hasTangent ? transformedTangent(hit.tangent, hit.shadingNormal, ref.transform)
+                                    : faceTangent(scene, hit, ref);
   if (tangent4.x == 0 && tangent4.y == 0 && tangent4.z == 0) return n;
   const Vec4f t = lookup(scene, ref, hit);
   const Vec3f local{(2 * t.x - 1) * scale, (2 * t.y - 1) * scale, 2 * t.z - 1};

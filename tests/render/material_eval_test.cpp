@@ -70,6 +70,32 @@ TEST(MaterialEval, FactorsAndNormalMapFollowGltfTangentSpace) {
   }
 }
 
+// A KHR_texture_transform on the normal map turns a vertex TANGENT frame as
+// it turns the frame derived from the uvs: rotated, mirrored, sheared.
+TEST(MaterialEval, TextureTransformTurnsTheTangentFrameEitherWay) {
+  const float s = std::sin(0.5f), c = std::cos(0.5f);
+  const UvTransform transforms[] = {UvTransform::fromOffsetRotationScale({0.1f, 0.2f}, 0.7f, {1, 1}),
+                                    UvTransform::fromOffsetRotationScale({0, 0}, 0.0f, {-1, 1}),
+                                    UvTransform::fromOffsetRotationScale({0.3f, 0}, -2.0f, {2, -0.5f}),
+                                    UvTransform{{1, 0.4f, 0, 0, 1, 0}}};
+  for (const Vec3f& mapNormal : {Vec3f{s, 0, c}, Vec3f{0, s, c}})
+    for (const UvTransform& x : transforms) {
+      Vec3f normals[2];
+      for (const bool withTangents : {true, false}) {
+        SceneDesc scene = normalMappedQuad(mapNormal, withTangents);
+        scene.materials[0].normalTexture.transform = x;
+        const SurfaceHit hit = hitOnQuad(withTangents ? Vec4f{1, 0, 0, 1} : Vec4f{0, 0, 0, 0});
+        normals[withTangents] =
+            evaluateMaterial(MaterialTable(scene), hit, normalize(Vec3f{0.1f, 1, 0.2f})).frame.n;
+      }
+      EXPECT_NEAR(normals[1].x, normals[0].x, 1e-5f);
+      EXPECT_NEAR(normals[1].y, normals[0].y, 1e-5f);
+      EXPECT_NEAR(normals[1].z, normals[0].z, 1e-5f);
+      // And the map does tilt the normal (the test would pass vacuously otherwise).
+      EXPECT_LT(normals[1].y, 0.95f);
+    }
+}
+
 TEST(MaterialEval, EmissionIsFrontFacingUnlessDoubleSided) {
   SceneDesc scene = normalMappedQuad({0, 0, 1}, true);
   scene.materials[0].emissive = {2, 3, 4};
