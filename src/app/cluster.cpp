@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <string>
-#include <string_view>
-#include <utility>
 
 #if LENSRT_WITH_MPI
 #include <mpi.h>
@@ -37,13 +35,19 @@ std::string Cluster::refusal(const std::optional<Launch>& l, bool withMpi) {
 }
 
 std::optional<Cluster::Launch> Cluster::launch(const std::function<const char*(const char*)>& getenv) {
-  // Open MPI's mpirun; MPICH's hydra (PMI); PMIx launchers, whose size Slurm gives.
-  const std::pair<const char*, const char*> launchers[] = {{"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK"},
-                                                           {"PMI_SIZE", "PMI_RANK"},
-                                                           {"SLURM_NTASKS", "PMIX_RANK"}};
-  for (const auto& [sizeName, rankName] : launchers) {
-    const int size = number(getenv, sizeName), rank = number(getenv, rankName);
-    if (rank < 0 && (size < 0 || sizeName == std::string_view("SLURM_NTASKS"))) continue;
+  struct Launcher {
+    const char* size;
+    const char* rank;
+    bool sizeAlone;  // whether the size variable alone means a launch
+  };
+  // Open MPI's mpirun; MPICH's hydra (PMI); PMIx launchers such as srun, whose
+  // size Slurm gives (SLURM_NTASKS is also set in a batch job's own shell).
+  constexpr Launcher kLaunchers[] = {{"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK", true},
+                                     {"PMI_SIZE", "PMI_RANK", true},
+                                     {"SLURM_NTASKS", "PMIX_RANK", false}};
+  for (const Launcher& l : kLaunchers) {
+    const int size = number(getenv, l.size), rank = number(getenv, l.rank);
+    if (rank < 0 && (size < 0 || !l.sizeAlone)) continue;
     return Launch{std::max(size, 0), std::max(rank, 0)};
   }
   return std::nullopt;
