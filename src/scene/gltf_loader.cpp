@@ -423,13 +423,16 @@ class Traversal {
                 ") is placed beyond 1e15 (check the node transforms)");
     if (gc.type == "orthographic") {
       const tinygltf::OrthographicCamera& o = gc.orthographic;
-      // glTF: xmag and ymag must not be zero (a negative one mirrors nothing here).
-      const double xmag = std::abs(o.xmag), ymag = std::abs(o.ymag);
-      if (xmag > 0 && ymag > 0 && xmag < gltf::kMaxCoordinate && ymag < gltf::kMaxCoordinate) {
+      // glTF: xmag and ymag must not be zero (a negative one mirrors nothing
+      // here); both and their ratio must be usable floats.
+      const float xmag = static_cast<float>(std::abs(o.xmag)), ymag = static_cast<float>(std::abs(o.ymag));
+      const float aspect = xmag / ymag;
+      if (xmag > 0 && ymag > 0 && xmag < gltf::kMaxCoordinate && ymag < gltf::kMaxCoordinate && aspect > 0 &&
+          std::isfinite(aspect)) {
         cam.orthographic = true;
-        cam.xmag = static_cast<float>(xmag);
-        cam.ymag = static_cast<float>(ymag);
-        cam.aspectRatio = static_cast<float>(xmag / ymag);
+        cam.xmag = xmag;
+        cam.ymag = ymag;
+        cam.aspectRatio = aspect;
       } else {
         ctx_.warnings.warn("camera '" + cam.name +
                            "': orthographic xmag and ymag must be non-zero; rendering it as a perspective "

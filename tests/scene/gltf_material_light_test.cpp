@@ -220,6 +220,33 @@ TEST(GltfMaterial, UnsupportedFeaturesEachWarnOnce) {
   EXPECT_FLOAT_EQ(d.cameras.at(0).ymag, 1.0f);
 }
 
+// An orthographic camera keeps xmag and ymag (its aspect ratio is theirs);
+// one that is zero, or too small for a float, falls back to perspective.
+TEST(GltfMaterial, OrthographicCamerasKeepTheirMagnifications) {
+  for (const double xmag : {2.0, 0.0, 1e-50}) {
+    GltfBuilder b;
+    const int pos = b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+    b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", pos}}}})}});
+    b.doc["nodes"][0]["camera"] = 0;
+    b.doc["cameras"] = {{{"type", "orthographic"},
+                         {"orthographic", {{"xmag", xmag}, {"ymag", 0.5}, {"zfar", 10}, {"znear", 0}}}}};
+    Warnings w;
+    const CameraDesc cam = load(b, w).cameras.at(0);
+    if (xmag > 1) {
+      EXPECT_TRUE(cam.orthographic);
+      EXPECT_FLOAT_EQ(cam.xmag, 2.0f);
+      EXPECT_FLOAT_EQ(cam.ymag, 0.5f);
+      EXPECT_FLOAT_EQ(cam.aspectRatio.value_or(0), 4.0f);
+      EXPECT_TRUE(w.all().empty());
+    } else {
+      EXPECT_FALSE(cam.orthographic) << xmag;
+      EXPECT_EQ(w.all(),
+                (std::set<std::string>{"camera 'node 0': orthographic xmag and ymag must be non-zero; "
+                                       "rendering it as a perspective camera (yfov 39.6 degrees)"}));
+    }
+  }
+}
+
 TEST(GltfMaterial, LayerExtensionsLoadTheirFactorsAndTextures) {
   GltfBuilder b;
   addPngImage(b);
