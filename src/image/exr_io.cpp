@@ -24,7 +24,6 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
-#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -313,8 +312,6 @@ void checkHeaderSizes(const Read& read, std::uint64_t size, const std::string& n
   }
 }
 
-using ReadBytes = std::function<bool(std::uint64_t pos, std::size_t n, unsigned char* out)>;
-
 Image decode(Imf::IStream& stream, const std::string& name, ImageMetadata* metadata, std::size_t maxValues) {
   try {
     Imf::InputFile in(stream);
@@ -424,7 +421,7 @@ Image readExrFile(const std::filesystem::path& file, ImageMetadata* metadata, st
     std::ifstream in(file, std::ios::binary);
     in.seekg(0, std::ios::end);
     const auto size = std::uint64_t(std::max<std::streamoff>(0, in.tellg()));
-    const ReadBytes read = [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
+    const auto read = [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
       in.clear();
       in.seekg(std::streamoff(pos));
       return bool(in.read(reinterpret_cast<char*>(out), std::streamsize(n)));
@@ -436,7 +433,7 @@ Image readExrFile(const std::filesystem::path& file, ImageMetadata* metadata, st
 
 Image decodeExr(std::string_view bytes, const std::string& name, ImageMetadata* metadata,
                 std::size_t maxValues) {
-  const ReadBytes read = [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
+  const auto read = [&](std::uint64_t pos, std::size_t n, unsigned char* out) {
     if (pos > bytes.size() || n > bytes.size() - pos) return false;
     std::memcpy(out, bytes.data() + pos, n);
     return true;
