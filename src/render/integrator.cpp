@@ -19,6 +19,17 @@ Vec3f offsetOrigin(const Vec3f& p, const Vec3f& n) {
   return p + n * offsetScale(p);
 }
 
+// Aims `ray` from its origin at the light point `target`, stopping short of it
+// by the same offset so that the emitter does not shadow itself; returns the
+// distance to the target.
+float aimAt(Ray& ray, const Vec3f& target) {
+  const Vec3f d = target - ray.origin;
+  const float len = length(d);
+  ray.direction = d / len;
+  ray.tMax = len * (1 - 1e-4f) - offsetScale(target);
+  return len;
+}
+
 }  // namespace
 
 float powerHeuristic(float pdfA, float pdfB) {
@@ -54,13 +65,7 @@ Rgb Integrator::thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite
     if (!(maxComponent(t) > 0)) return {0, 0, 0};
     // On past the sheet, toward the same light point.
     ray.origin = offsetOrigin(hit->position, -sp.geometricNormal);
-    if (finite) {
-      const Vec3f d = target - ray.origin;
-      const float len = length(d);
-      if (!(len > offsetScale(target))) return t;
-      ray.direction = d / len;
-      ray.tMax = len * (1 - 1e-4f) - offsetScale(target);
-    }
+    if (finite && !(aimAt(ray, target) > offsetScale(target))) return t;  // past the light
   }
   return {0, 0, 0};
 }
@@ -127,34 +132,24 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
       if (ls && (dot(ls->wi, ng) > 0 || bsdf.transmits()) && consistent(ls->wi)) {
         const Rgb f = bsdf.eval(wo, ls->wi) * std::abs(dot(ls->wi, sp.frame.n));
         if (maxComponent(f) > 0) {
-          const Vec3f origin = originToward(ls->wi);
-          Ray shadow{origin, ls->wi, 0.0f, kInfinityF};
-          if (std::isfinite(ls->distance)) {
-            // Aim from the offset origin at the light point itself, and stop
-            // short of it by the same offset so the emitter does not shadow itself.
-            const Vec3f target = hit->position + ls->wi * ls->distance;
-            const Vec3f d = target - origin;
-            const float len = length(d);
-            shadow.direction = d / len;
-            shadow.tMax = len * (1 - 1e-4f) - offsetScale(target);
-          }
+          Ray shadow{originToward(ls->wi), ls->wi, 0.0f, kInfinityF};
+          // A light at a point: aim from the offset origin at that point itself.
+          const bool finite = std::isfinite(ls->distance);
+          const Vec3f target = finite ? hit->position + ls->wi * ls->distance : Vec3f{};
+          if (finite) aimAt(shadow, target);
 
           if (settings_.observer) settings_.observer->traced(RayKind::Shadow, shadow);
           // Punctual lights shine through thin-walled glass (see
           // thinGlassTransmittance); every other shadow ray stops at anything.
-          const Rgb visible =
-              ls->delta && thinGlass_
-                  ? thinGlassTransmittance(
-                        shadow, std::isfinite(ls->distance) ? hit->position + ls->wi * ls->distance : Vec3f{},
-                        std::isfinite(ls->distance))
-                  : Rgb{1, 1, 1} * (scene_.occluded(shadow) ? 0.0f : 1.0f);
+          const Rgb visible = ls->delta && thinGlass_
+                                  ? thinGlassTransmittance(shadow, target, finite)
+                                  : Rgb{1, 1, 1} * (scene_.occluded(shadow) ? 0.0f : 1.0f);
           if (maxComponent(visible) > 0) {
             const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(wo, ls->wi));
             Rgb contribution = beta * f * ls->radiance * visible * (w / ls->pdf);
             // Inside a medium the light's segment is absorbed too (a light
             // inside a volume; lights outside are behind its surface).
-            if (maxComponent(sigma) > 0 && std::isfinite(ls->distance))
-              contribution *= absorbed(ls->distance);
+            if (maxComponent(sigma) > 0 && finite) contribution *= absorbed(ls->distance);
             out.radiance += contribution;
           }
         }

@@ -42,9 +42,6 @@ class Integrator {
   PathSample trace(const Ray& ray, const Sampler& sampler) const;
 
  private:
-  const RenderScene& scene_;
-  const MaterialTable& materials_;
-  const LightSet& lights_;
   // What reaches a punctual light along a shadow ray: 1 when nothing is in
   // the way, 0 behind anything opaque or rough, and through smooth thin-walled
   // transmitting sheets (window panes) their straight-through share,
@@ -58,6 +55,9 @@ class Integrator {
   // `target` is the light point (finite) for re-aiming past each sheet.
   Rgb thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite) const;
 
+  const RenderScene& scene_;
+  const MaterialTable& materials_;
+  const LightSet& lights_;
   const Environment& environment_;
   IntegratorSettings settings_;
   bool thinGlass_ = false;  // the scene has thin-walled transmitting materials
