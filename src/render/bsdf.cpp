@@ -67,11 +67,16 @@ Rgb Bsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
   const float hl = length(h);
   if (hl == 0) return {0, 0, 0};
   h = h / hl;
+  return evalAt(wo, wi, h, ggxD(h));
+}
+
+// eval for the unit half vector h of wo and wi and d = D(h).
+Rgb Bsdf::evalAt(const Vec3f& wo, const Vec3f& wi, const Vec3f& h, float d) const {
   const float vDotH = std::max(0.0f, dot(wo, h));
   const float fw = ggx::schlickWeight(vDotH);
   // Height-correlated Smith G2 over the usual 4 cos cos denominator.
   const float g2 = 1.0f / (1.0f + lambdaAt(wo) + lambdaAt(wi));
-  const float spec = ggxD(h) * g2 / (4 * wo.z * wi.z);
+  const float spec = d * g2 / (4 * wo.z * wi.z);
   const Rgb one{1, 1, 1};
   const Rgb fDielectric = f0_ + (one * p_.specularWeight - f0_) * fw;
   const Rgb fMetal = p_.baseColor + (one - p_.baseColor) * fw;
@@ -103,15 +108,33 @@ float Bsdf::specularPdf(const Vec3f& wo, const Vec3f& wi) const {
   const float hl = length(h);
   if (hl == 0) return 0;
   h = h / hl;
-  // Visible-normal pdf times the reflection Jacobian 1 / (4 wo.h).
+  return specularPdfAt(wo, ggxD(h));
+}
+
+// Visible-normal pdf times the reflection Jacobian 1 / (4 wo.h), for d = D(h).
+float Bsdf::specularPdfAt(const Vec3f& wo, float d) const {
   const float g1 = 1.0f / (1.0f + lambdaAt(wo));
-  return g1 * ggxD(h) / (4 * wo.z);
+  return g1 * d / (4 * wo.z);
+}
+
+float Bsdf::mixturePdf(const Vec3f& wo, const Vec3f& wi, float specular) const {
+  const float ps = specularProbability(wo);
+  return ps * specular + (1 - ps) * wi.z * kInvPiF;
 }
 
 float Bsdf::pdf(const Vec3f& wo, const Vec3f& wi) const {
   if (wo.z <= 0 || wi.z <= 0) return 0;
-  const float ps = specularProbability(wo);
-  return ps * specularPdf(wo, wi) + (1 - ps) * wi.z * kInvPiF;
+  return mixturePdf(wo, wi, specularPdf(wo, wi));
+}
+
+BsdfValue Bsdf::evalPdf(const Vec3f& wo, const Vec3f& wi) const {
+  if (wo.z <= 0 || wi.z <= 0) return {};
+  Vec3f h = wo + wi;
+  const float hl = length(h);
+  if (hl == 0) return {{0, 0, 0}, mixturePdf(wo, wi, 0)};
+  h = h / hl;
+  const float d = ggxD(h);
+  return {evalAt(wo, wi, h, d), mixturePdf(wo, wi, specularPdfAt(wo, d))};
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3f& wo, float uLobe, const Vec2f& u) const {
@@ -124,9 +147,9 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3f& wo, float uLobe, const Vec2f
     wi = ggx::cosineHemisphere(u);
   }
   if (wi.z <= 0) return std::nullopt;
-  const float density = pdf(wo, wi);
-  if (!(density > 0)) return std::nullopt;
-  return BsdfSample{wi, eval(wo, wi), density};
+  const BsdfValue v = evalPdf(wo, wi);
+  if (!(v.pdf > 0)) return std::nullopt;
+  return BsdfSample{wi, v.f, v.pdf};
 }
 
 }  // namespace lensrt

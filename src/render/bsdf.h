@@ -40,6 +40,13 @@ struct BsdfParams {
 // f90 = weight.
 Rgb dielectricF0(const BsdfParams& p);
 
+// A BSDF's value and sampling density for one pair of directions, computed
+// together: the same bits as eval and pdf called one after the other.
+struct BsdfValue {
+  Rgb f{0, 0, 0};  // BSDF value (no cosine)
+  float pdf = 0;   // solid angle, of the whole mixture
+};
+
 struct BsdfSample {
   Vec3f wi;
   Rgb f;      // BRDF value (no cosine)
@@ -62,6 +69,8 @@ class Bsdf {
 
   Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
+  // Both at once, sharing the half vector and D.
+  BsdfValue evalPdf(const Vec3f& wo, const Vec3f& wi) const;
   // uLobe picks the lobe, u the direction. Empty when the sample falls below
   // the surface or has zero density.
   std::optional<BsdfSample> sample(const Vec3f& wo, float uLobe, const Vec2f& u) const;
@@ -76,6 +85,9 @@ class Bsdf {
 
  private:
   float specularPdf(const Vec3f& wo, const Vec3f& wi) const;
+  float specularPdfAt(const Vec3f& wo, float d) const;
+  float mixturePdf(const Vec3f& wo, const Vec3f& wi, float specular) const;
+  Rgb evalAt(const Vec3f& wo, const Vec3f& wi, const Vec3f& h, float d) const;
   Rgb dielectricSpecularAlbedo(float mu) const;
   // The wo-only quantities, from the prepared values when mu is muO.
   Rgb specularAlbedoAt(float mu) const;

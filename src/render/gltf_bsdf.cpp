@@ -89,6 +89,26 @@ float GltfBsdf::pdf(const Vec3f& wo, const Vec3f& wi) const {
   return p;
 }
 
+BsdfValue GltfBsdf::evalPdf(const Vec3f& wo, const Vec3f& wi) const {
+  const Choice c = choose(wo);
+  const Vec3f woL = local(wo), wiL = shading_.toLocal(wi);
+  const BsdfValue b = base_.evalPdf(woL, wiL);
+  // eval's and pdf's sums, term by term in their order.
+  Rgb f = b.f;
+  float p = 0;
+  if (c.base > 0) p += c.base * b.pdf;
+  if (transmission_ > 0) f += dielectric_->eval(woL, wiL) * transmission_;
+  if (c.trans > 0) p += c.trans * dielectric_->pdf(woL, wiL);
+  if (sheenMax_ > 0) f = sheen_->eval(woL, wiL) + f * sheenScale(woL, wiL);
+  if (c.sheen > 0) p += c.sheen * sheen_->pdf(woL, wiL);
+  if (clearcoat_ > 0) {
+    const Vec3f woC = coatLocal(wo), wiC = coat_.toLocal(wi);
+    f = coatLobe_->eval(woC, wiC) * clearcoat_ + f * coatScale(woC, wiC);
+    if (c.coat > 0) p += c.coat * coatLobe_->pdf(woC, wiC);
+  }
+  return {f, p};
+}
+
 std::optional<BsdfSample> GltfBsdf::sample(const Vec3f& wo, float uLobe, const Vec2f& u) const {
   const Choice c = choose(wo);
   std::optional<BsdfSample> s;
@@ -111,9 +131,9 @@ std::optional<BsdfSample> GltfBsdf::sample(const Vec3f& wo, float uLobe, const V
   const Vec3f wi = normalize((coatFrame ? coat_ : shading_).toWorld(s->wi));
   // Single-lobe materials (the common case) keep the lobe's own values.
   if (c.base == 1 || c.trans == 1) return BsdfSample{wi, s->f, s->pdf};
-  const float density = pdf(wo, wi);
-  if (!(density > 0)) return std::nullopt;
-  return BsdfSample{wi, eval(wo, wi), density};
+  const BsdfValue v = evalPdf(wo, wi);
+  if (!(v.pdf > 0)) return std::nullopt;
+  return BsdfSample{wi, v.f, v.pdf};
 }
 
 }  // namespace lensrt

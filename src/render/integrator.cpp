@@ -123,14 +123,15 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
     const auto originToward = [&](const Vec3f& wi) {
       return offsetOrigin(hit->position, dot(wi, ng) > 0 ? ng : -ng);
     };
-    const std::uint32_t dim = kDimFirstBounce + std::uint32_t(depth) * kDimensionsPerBounce;
+    // This vertex's sample values, all at once (see SampleBlock).
+    const SampleBlock u = sampler.block(kDimFirstBounce + std::uint32_t(depth) * kDimensionsPerBounce);
 
     // Next-event estimation.
     if (!lights_.empty()) {
-      const std::optional<LightSample> ls =
-          lights_.sample(hit->position, sampler.get1D(dim), sampler.get2D(dim + 1));
+      const std::optional<LightSample> ls = lights_.sample(hit->position, u.get1D(0), u.get2D(1));
       if (ls && (dot(ls->wi, ng) > 0 || bsdf.transmits()) && consistent(ls->wi)) {
-        const Rgb f = bsdf.eval(wo, ls->wi) * std::abs(dot(ls->wi, sp.frame.n));
+        const BsdfValue bv = bsdf.evalPdf(wo, ls->wi);
+        const Rgb f = bv.f * std::abs(dot(ls->wi, sp.frame.n));
         if (maxComponent(f) > 0) {
           Ray shadow{originToward(ls->wi), ls->wi, 0.0f, kInfinityF};
           // A light at a point: aim from the offset origin at that point itself.
@@ -145,7 +146,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
                                   ? thinGlassTransmittance(shadow, target, finite)
                                   : Rgb{1, 1, 1} * (scene_.occluded(shadow) ? 0.0f : 1.0f);
           if (maxComponent(visible) > 0) {
-            const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bsdf.pdf(wo, ls->wi));
+            const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bv.pdf);
             Rgb contribution = beta * f * ls->radiance * visible * (w / ls->pdf);
             // Inside a medium the light's segment is absorbed too (a light
             // inside a volume; lights outside are behind its surface).
@@ -157,7 +158,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
     }
 
     // Continue the path by sampling the BSDF.
-    const std::optional<BsdfSample> bs = bsdf.sample(wo, sampler.get1D(dim + 2), sampler.get2D(dim + 3));
+    const std::optional<BsdfSample> bs = bsdf.sample(wo, u.get1D(2), u.get2D(3));
     if (!bs) break;
     const Vec3f wi = bs->wi;
     if (!consistent(wi)) break;  // a shading-normal artefact
@@ -175,7 +176,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
       const float survive = std::min(1.0f, maxComponent(beta));
       if (!(survive > 0)) break;
       if (survive < 1) {
-        if (sampler.get1D(dim + 4) >= survive) break;
+        if (u.get1D(4) >= survive) break;
         beta = beta / survive;
       }
     }

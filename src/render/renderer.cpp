@@ -56,16 +56,18 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
           const Sampler& sampler = samplers.emplace_back(settings.seed, pixelOf(j), sampleOf(j));
-          const Vec2f offset = sampler.get2D(kDimFilm);
+          static_assert(kDimFilm == 0);
+          const SampleBlock u = sampler.block(kDimFilm);
+          const Vec2f offset = u.get2D(kDimFilm);
           CameraSample& cs = samples[k];
           cs.film = {float(x0 + int(j / spp)) + offset.x, float(y) + offset.y};
-          cs.lens = sampler.get2D(kDimLens);
+          cs.lens = u.get2D(kDimLens);
           // The sampler's 1D stream is a scrambled van der Corput sequence in
           // the sample index: a pixel's wavelengths are stratified (any
           // power-of-two prefix, so passes and resumes keep it). Cameras
           // that ignore the wavelength keep the default.
           if (spectral) {
-            const WavelengthSample ws = sampleWavelength(sampler.get1D(kDimWavelength));
+            const WavelengthSample ws = sampleWavelength(u.get1D(kDimWavelength));
             cs.wavelengthNm = ws.wavelengthNm;
             spectralWeights[k] = ws.weight;
           }

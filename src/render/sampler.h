@@ -8,6 +8,7 @@
 // the samples of one pixel is well stratified in every pair.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "core/vec.h"
@@ -27,6 +28,22 @@ inline constexpr std::uint32_t kDimensionsPerBounce = 5;  // light pick, light 2
 std::uint32_t hashCombine(std::uint32_t seed, std::uint32_t v);
 std::uint32_t hash64(std::uint64_t v);
 
+// The points of kDims consecutive dimensions of one sample, computed together:
+// get2D(k) is the sampler's get2D(first + k), get1D(k) its get1D(first + k),
+// bit for bit. A path vertex takes its kDimensionsPerBounce values from one
+// block; on CPUs with AVX2 the dimensions are hashed in SIMD lanes.
+class SampleBlock {
+ public:
+  static constexpr std::uint32_t kDims = 8;
+  float get1D(std::uint32_t k) const { return x_[k]; }
+  Vec2f get2D(std::uint32_t k) const { return {x_[k], y_[k]}; }
+
+ private:
+  friend class Sampler;
+  std::array<float, kDims> x_{}, y_{};
+};
+static_assert(kDimensionsPerBounce <= SampleBlock::kDims && kDimFirstBounce <= SampleBlock::kDims);
+
 class Sampler {
  public:
   Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sampleIndex);
@@ -35,6 +52,10 @@ class Sampler {
   // id return the first coordinate(s) of the same point.
   float get1D(std::uint32_t dimension) const;
   Vec2f get2D(std::uint32_t dimension) const;
+  // Dimensions first .. first + SampleBlock::kDims - 1 at once.
+  SampleBlock block(std::uint32_t first) const;
+  // The scalar path of block(), whatever the CPU (for tests).
+  SampleBlock blockScalar(std::uint32_t first) const;
 
  private:
   std::uint32_t pixelSeed_;

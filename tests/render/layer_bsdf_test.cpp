@@ -227,6 +227,12 @@ TEST(GltfBsdf, PreparedForAViewGivesTheSameBits) {
         ASSERT_TRUE(same(plain.eval(wi, w), prepared.eval(wi, w))) << "layers " << layers << " k " << k;
         const float a = plain.pdf(w, wi), b = prepared.pdf(w, wi);
         ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << "layers " << layers << " k " << k;
+        // evalPdf is eval and pdf together, bit for bit, prepared or not.
+        for (const GltfBsdf* g : {&plain, &prepared}) {
+          const BsdfValue v = g->evalPdf(w, wi);
+          ASSERT_TRUE(same(v.f, plain.eval(w, wi))) << "layers " << layers << " k " << k;
+          ASSERT_EQ(std::memcmp(&v.pdf, &a, sizeof a), 0) << "layers " << layers << " k " << k;
+        }
         const float uLobe = u(rng);
         const Vec2f uDir{u(rng), u(rng)};
         const auto sa = plain.sample(w, uLobe, uDir), sb = prepared.sample(w, uLobe, uDir);

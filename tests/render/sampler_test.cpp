@@ -57,6 +57,26 @@ TEST(Sampler, IsOwenScrambledSobolPaddedByAnOwenShuffle) {
   }
 }
 
+TEST(Sampler, BlocksAreTheSameBitsAsOneDimensionAtATime) {
+  // block() takes the AVX2 lanes on CPUs that have them (blockScalar never):
+  // both must equal get2D and get1D dimension by dimension.
+  std::uint32_t state = 7;
+  const auto next = [&] { return state = hashCombine(state, 0x9abcdefu); };
+  for (int n = 0; n < 5000; ++n) {
+    const std::uint64_t seed = next(), pixel = next() % 1000000;
+    const std::uint32_t sample = n % 2 ? next() : next() % 4096;
+    // Near the top of the range too: the dimensions wrap as get2D's do.
+    const std::uint32_t first = n % 50 == 0 ? 0xFFFFFFFCu : next() % 64;
+    const Sampler s(seed, pixel, sample);
+    const SampleBlock fast = s.block(first), plain = s.blockScalar(first);
+    for (std::uint32_t k = 0; k < SampleBlock::kDims; ++k) {
+      ASSERT_EQ(fast.get2D(k), s.get2D(first + k)) << "dimension " << first + k << " sample " << sample;
+      ASSERT_EQ(plain.get2D(k), s.get2D(first + k));
+      ASSERT_EQ(fast.get1D(k), s.get1D(first + k));
+    }
+  }
+}
+
 TEST(Sampler, ValuesAreInTheUnitInterval) {
   for (std::uint32_t i = 0; i < 4096; ++i) {
     const Sampler s(7, 12345, i);
