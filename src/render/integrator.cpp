@@ -70,6 +70,15 @@ Rgb Integrator::thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite
   return {0, 0, 0};
 }
 
+std::uint32_t Integrator::sampleDimensions() const {
+  // The camera's block, then one block per scattering vertex (depth < maxDepth).
+  const std::int64_t last =
+      settings_.maxDepth > 0
+          ? std::int64_t(kDimFirstBounce) + std::int64_t(settings_.maxDepth - 1) * kDimensionsPerBounce
+          : 0;
+  return std::uint32_t(std::min<std::int64_t>(last + SampleBlock::kDims, std::int64_t{1} << 30));
+}
+
 PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const {
   PathSample out;
   Rgb beta{1, 1, 1};

@@ -40,6 +40,9 @@ class Integrator {
 
   // `ray` must have a unit direction.
   PathSample trace(const Ray& ray, const Sampler& sampler) const;
+  // The sampler dimensions a camera path can use, camera's included (the
+  // blocks it asks for; see PixelSeeds).
+  std::uint32_t sampleDimensions() const;
 
  private:
   // What reaches a punctual light along a shadow ray: 1 when nothing is in

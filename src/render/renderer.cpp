@@ -45,6 +45,10 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
     std::vector<Rgb> spectralWeights(spectral ? batch : 0);
     std::vector<Sampler> samplers;
     samplers.reserve(batch);
+    // The seeds of the pixels a batch covers, shared by their samples (the
+    // table is as long as a path's dimensions, up to a cap for deep paths).
+    const std::uint32_t dimensions = std::min<std::uint32_t>(integrator.sampleDimensions(), 256);
+    std::vector<PixelSeeds> pixelSeeds(batch / spp + 2);
     for (int y = y0; y < y1; ++y) {
       for (std::uint64_t first = 0; first < rowSamples; first += batch) {
         const std::size_t n = std::size_t(std::min<std::uint64_t>(batch, rowSamples - first));
@@ -53,9 +57,12 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
         };
         const auto sampleOf = [&](std::uint64_t j) { return firstSample + std::uint32_t(j % spp); };
         samplers.clear();
+        const std::uint64_t firstPixel = first / spp;
+        for (std::uint64_t p = firstPixel; p <= (first + n - 1) / spp; ++p)
+          pixelSeeds[p - firstPixel].reset(settings.seed, pixelOf(p * spp), dimensions);
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
-          const Sampler& sampler = samplers.emplace_back(settings.seed, pixelOf(j), sampleOf(j));
+          const Sampler& sampler = samplers.emplace_back(pixelSeeds[j / spp - firstPixel], sampleOf(j));
           static_assert(kDimFilm == 0);
           const SampleBlock u = sampler.block(kDimFilm);
           const Vec2f offset = u.get2D(kDimFilm);

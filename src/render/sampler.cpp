@@ -1,6 +1,7 @@
 #include "render/sampler.h"
 
 #include <array>
+#include <cstring>
 
 #include "core/cpu_features.h"
 
@@ -47,39 +48,27 @@ std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
 // reversed) is that reversed index itself; only what enters a point's scramble and
 // the values handed out are reversed. Three reversals per 2D point instead of seven.
 
-// The second Sobol dimension (the Pascal matrix) from and to the reversed domain:
-// reverseBits(sobol1(reverseBits(r))), a linear map applied a byte of r at a time:
-// table[k][b] is the XOR of the columns that byte b of r at byte position k selects.
-using SobolTable = std::array<std::array<std::uint32_t, 256>, 4>;
-constexpr std::uint32_t reverseBitsConstexpr(std::uint32_t x) {
-  std::uint32_t r = 0;
-  for (int i = 0; i < 32; ++i) r |= ((x >> i) & 1u) << (31 - i);
-  return r;
-}
-constexpr SobolTable makeReversedSobol1Table() {
-  // direction[i]: the generator matrix's column for bit i of the index.
-  std::array<std::uint32_t, 32> direction{};
-  std::uint32_t v = 1u << 31;
-  for (int i = 0; i < 32; ++i, v ^= v >> 1) direction[i] = v;
-  SobolTable t{};
-  // Bit j of r is bit 31 - j of the index; the result is reversed too.
-  for (int k = 0; k < 4; ++k)
-    for (int b = 0; b < 256; ++b)
-      for (int i = 0; i < 8; ++i)
-        if (b & (1 << i)) t[k][b] ^= reverseBitsConstexpr(direction[31 - (8 * k + i)]);
-  return t;
-}
-constexpr SobolTable kReversedSobol1 = makeReversedSobol1Table();
-
-std::uint32_t reversedSobol1(std::uint32_t r) {
-  return kReversedSobol1[0][r & 0xff] ^ kReversedSobol1[1][(r >> 8) & 0xff] ^
-         kReversedSobol1[2][(r >> 16) & 0xff] ^ kReversedSobol1[3][r >> 24];
+// The second Sobol dimension of index i, bit reversed: reverseBits(sobol1(i)).
+// Its generator columns are v_k = 2^31 (1 + x)^k over GF(2), x a right shift,
+// so by Lucas' theorem bit 31 - m of sobol1(i) is the XOR of the bits k of i
+// whose bit set contains m's: a superset-XOR transform over the bit
+// positions, five shift-and-mask steps (no table, so SIMD lanes need no gather).
+constexpr std::uint32_t sobol1Reversed(std::uint32_t i) {
+  i ^= (i >> 1) & 0x55555555u;
+  i ^= (i >> 2) & 0x33333333u;
+  i ^= (i >> 4) & 0x0F0F0F0Fu;
+  i ^= (i >> 8) & 0x00FF00FFu;
+  i ^= (i >> 16) & 0x0000FFFFu;
+  return i;
 }
 
 float toUnitFloat(std::uint32_t x) {
   // 24 high bits: exactly representable, strictly below 1.
   return float(x >> 8) * 0x1p-24f;
 }
+
+// A dimension's three scramble seeds are its seed hashed with these.
+constexpr std::uint32_t kShuffleSalt = 0x51ed270bu, kXSalt = 0x68bc21ebu, kYSalt = 0x02e5be93u;
 
 #if LENSRT_SAMPLER_AVX2
 // The sampler's integer steps on eight dimensions at once (GCC vector
@@ -117,26 +106,55 @@ LENSRT_AVX2 inline U8 reverseBits8(U8 x) {
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   return ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
 }
-LENSRT_AVX2 inline U8 reversedSobol1x8(U8 r) {
-  U8 out{};
-  for (int k = 0; k < 4; ++k) {
-    const __m256i byte = (__m256i)((r >> (8 * k)) & 0xffu);
-    out ^= (U8)_mm256_i32gather_epi32(reinterpret_cast<const int*>(kReversedSobol1[k].data()), byte, 4);
-  }
-  return out;
+LENSRT_AVX2 inline U8 sobol1Reversed8(U8 i) {
+  i ^= (i >> 1) & 0x55555555u;
+  i ^= (i >> 2) & 0x33333333u;
+  i ^= (i >> 4) & 0x0F0F0F0Fu;
+  i ^= (i >> 8) & 0x00FF00FFu;
+  i ^= (i >> 16) & 0x0000FFFFu;
+  return i;
 }
 LENSRT_AVX2 inline void storeUnitFloats(float* out, U8 x) {
   _mm256_storeu_ps(out, _mm256_mul_ps(_mm256_cvtepi32_ps((__m256i)(x >> 8)), _mm256_set1_ps(0x1p-24f)));
 }
 
-// Sampler::get2D on dimensions first .. first + 7 (see there).
+LENSRT_AVX2 inline U8 load8(const std::uint32_t* p) {
+  U8 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+LENSRT_AVX2 inline void store8(std::uint32_t* p, U8 v) {
+  std::memcpy(p, &v, sizeof v);
+}
+
+// The seeds of dimensions first .. first + 7 (see PixelSeeds::reset).
+LENSRT_AVX2 void seeds8(std::uint32_t pixelSeed, std::uint32_t first, std::uint32_t* shuffle,
+                        std::uint32_t* x, std::uint32_t* y) {
+  const U8 dimSeed = hashCombine8(splat(pixelSeed), U8{0, 1, 2, 3, 4, 5, 6, 7} + first);
+  store8(shuffle, hashCombine8(dimSeed, splat(kShuffleSalt)));
+  store8(x, hashCombine8(dimSeed, splat(kXSalt)));
+  store8(y, hashCombine8(dimSeed, splat(kYSalt)));
+}
+
+// Sampler::get2D on eight dimensions with these seeds (see there).
+LENSRT_AVX2 void points8(U8 shuffle, U8 xSeed, U8 ySeed, std::uint32_t reversedIndex, float* xs, float* ys) {
+  const U8 index = reverseBits8(laineKarras8(splat(reversedIndex), shuffle));
+  storeUnitFloats(xs, reverseBits8(laineKarras8(index, xSeed)));
+  storeUnitFloats(ys, reverseBits8(laineKarras8(sobol1Reversed8(index), ySeed)));
+}
+
+// Dimensions first .. first + 7 from the pixel seed.
 LENSRT_AVX2 void block8(std::uint32_t pixelSeed, std::uint32_t reversedIndex, std::uint32_t first, float* xs,
                         float* ys) {
   const U8 dimSeed = hashCombine8(splat(pixelSeed), U8{0, 1, 2, 3, 4, 5, 6, 7} + first);
-  const U8 r = laineKarras8(splat(reversedIndex), hashCombine8(dimSeed, splat(0x51ed270bu)));
-  storeUnitFloats(xs, reverseBits8(laineKarras8(reverseBits8(r), hashCombine8(dimSeed, splat(0x68bc21ebu)))));
-  storeUnitFloats(ys,
-                  reverseBits8(laineKarras8(reversedSobol1x8(r), hashCombine8(dimSeed, splat(0x02e5be93u)))));
+  points8(hashCombine8(dimSeed, splat(kShuffleSalt)), hashCombine8(dimSeed, splat(kXSalt)),
+          hashCombine8(dimSeed, splat(kYSalt)), reversedIndex, xs, ys);
+}
+
+// The same from a pixel's table of seeds.
+LENSRT_AVX2 void block8(const std::uint32_t* shuffle, const std::uint32_t* x, const std::uint32_t* y,
+                        std::uint32_t reversedIndex, float* xs, float* ys) {
+  points8(load8(shuffle), load8(x), load8(y), reversedIndex, xs, ys);
 }
 static_assert(SampleBlock::kDims == 8);
 #endif
@@ -158,24 +176,61 @@ std::uint32_t hash64(std::uint64_t v) {
   return hashCombine(hashCombine(0x2545f491u, std::uint32_t(v)), std::uint32_t(v >> 32));
 }
 
+namespace {
+std::uint32_t pixelSeedOf(std::uint64_t seed, std::uint64_t pixelIndex) {
+  return hashCombine(hash64(seed), hash64(pixelIndex));
+}
+}  // namespace
+
+void PixelSeeds::reset(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t dimensions) {
+  pixelSeed_ = pixelSeedOf(seed, pixelIndex);
+  // Whole blocks of eight, so the SIMD path fills them directly.
+  const std::uint32_t n = (dimensions + 7) / 8 * 8;
+  shuffle_.resize(n);
+  xSeed_.resize(n);
+  ySeed_.resize(n);
+#if LENSRT_SAMPLER_AVX2
+  if (avx2Enabled()) {
+    for (std::uint32_t d = 0; d < n; d += 8) seeds8(pixelSeed_, d, &shuffle_[d], &xSeed_[d], &ySeed_[d]);
+    return;
+  }
+#endif
+  for (std::uint32_t d = 0; d < n; ++d) {
+    const std::uint32_t dimSeed = hashCombine(pixelSeed_, d);
+    shuffle_[d] = hashCombine(dimSeed, kShuffleSalt);
+    xSeed_[d] = hashCombine(dimSeed, kXSalt);
+    ySeed_[d] = hashCombine(dimSeed, kYSalt);
+  }
+}
+
 Sampler::Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sampleIndex)
-    : pixelSeed_(hashCombine(hash64(seed), hash64(pixelIndex))), reversedIndex_(reverseBits(sampleIndex)) {}
+    : pixelSeed_(pixelSeedOf(seed, pixelIndex)), reversedIndex_(reverseBits(sampleIndex)) {}
+
+Sampler::Sampler(const PixelSeeds& seeds, std::uint32_t sampleIndex)
+    : pixelSeed_(seeds.pixelSeed()), reversedIndex_(reverseBits(sampleIndex)), seeds_(&seeds) {}
 
 // Per dimension the sample index is shuffled by an Owen scramble (padding), then
 // the point of the shuffled index is Owen scrambled per coordinate (see above):
 // r is the shuffled index reversed, which is also the point's x before its scramble.
+Sampler::Seeds Sampler::seeds(std::uint32_t dimension) const {
+  if (seeds_ && dimension < seeds_->dimensions())
+    return {seeds_->shuffle_[dimension], seeds_->xSeed_[dimension], seeds_->ySeed_[dimension]};
+  const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);
+  return {hashCombine(dimSeed, kShuffleSalt), hashCombine(dimSeed, kXSalt), hashCombine(dimSeed, kYSalt)};
+}
+
 float Sampler::get1D(std::uint32_t dimension) const {
   // The x coordinate of get2D(dimension), without computing y.
-  const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);
-  const std::uint32_t r = laineKarras(reversedIndex_, hashCombine(dimSeed, 0x51ed270bu));
-  return toUnitFloat(reverseBits(laineKarras(reverseBits(r), hashCombine(dimSeed, 0x68bc21ebu))));
+  const Seeds s = seeds(dimension);
+  const std::uint32_t r = laineKarras(reversedIndex_, s.shuffle);
+  return toUnitFloat(reverseBits(laineKarras(reverseBits(r), s.x)));
 }
 
 Vec2f Sampler::get2D(std::uint32_t dimension) const {
-  const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);
-  const std::uint32_t r = laineKarras(reversedIndex_, hashCombine(dimSeed, 0x51ed270bu));
-  const std::uint32_t x = reverseBits(laineKarras(reverseBits(r), hashCombine(dimSeed, 0x68bc21ebu)));
-  const std::uint32_t y = reverseBits(laineKarras(reversedSobol1(r), hashCombine(dimSeed, 0x02e5be93u)));
+  const Seeds s = seeds(dimension);
+  const std::uint32_t index = reverseBits(laineKarras(reversedIndex_, s.shuffle));
+  const std::uint32_t x = reverseBits(laineKarras(index, s.x));
+  const std::uint32_t y = reverseBits(laineKarras(sobol1Reversed(index), s.y));
   return {toUnitFloat(x), toUnitFloat(y)};
 }
 
@@ -193,7 +248,12 @@ SampleBlock Sampler::block(std::uint32_t first) const {
 #if LENSRT_SAMPLER_AVX2
   if (avx2Enabled()) {
     SampleBlock b;
-    block8(pixelSeed_, reversedIndex_, first, b.x_.data(), b.y_.data());
+    // Dimensions past the pixel's table (deep paths) hash their seeds here.
+    if (seeds_ && first < seeds_->dimensions() && seeds_->dimensions() - first >= SampleBlock::kDims)
+      block8(&seeds_->shuffle_[first], &seeds_->xSeed_[first], &seeds_->ySeed_[first], reversedIndex_,
+             b.x_.data(), b.y_.data());
+    else
+      block8(pixelSeed_, reversedIndex_, first, b.x_.data(), b.y_.data());
     return b;
   }
 #endif

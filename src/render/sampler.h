@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "core/vec.h"
 
@@ -44,9 +45,29 @@ class SampleBlock {
 };
 static_assert(kDimensionsPerBounce <= SampleBlock::kDims && kDimFirstBounce <= SampleBlock::kDims);
 
+// What every sample of one pixel shares: the scramble seeds of its first
+// dimensions, hashed once per pixel rather than once per sample and
+// dimension (the same values; a Sampler made with them gives the same bits).
+class PixelSeeds {
+ public:
+  PixelSeeds() = default;
+  // Seeds for dimensions [0, dimensions); reuses this object's storage.
+  void reset(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t dimensions);
+  std::uint32_t pixelSeed() const { return pixelSeed_; }
+  std::uint32_t dimensions() const { return std::uint32_t(shuffle_.size()); }
+
+ private:
+  friend class Sampler;
+  std::uint32_t pixelSeed_ = 0;
+  // Per dimension: the seeds of the index shuffle, the x and the y scramble.
+  std::vector<std::uint32_t> shuffle_, xSeed_, ySeed_;
+};
+
 class Sampler {
  public:
   Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sampleIndex);
+  // A sample of the pixel `seeds` was made for (it must outlive the Sampler).
+  Sampler(const PixelSeeds& seeds, std::uint32_t sampleIndex);
 
   // Values in [0, 1). A "dimension" is a stream id; 1D and 2D requests on the same
   // id return the first coordinate(s) of the same point.
@@ -58,8 +79,16 @@ class Sampler {
   SampleBlock blockScalar(std::uint32_t first) const;
 
  private:
+  // A dimension's seeds for the index shuffle and the x and y scrambles
+  // (hashed here unless the pixel's table has them).
+  struct Seeds {
+    std::uint32_t shuffle, x, y;
+  };
+  Seeds seeds(std::uint32_t dimension) const;
+
   std::uint32_t pixelSeed_;
   std::uint32_t reversedIndex_;  // the sample index, bit reversed
+  const PixelSeeds* seeds_ = nullptr;
 };
 
 }  // namespace lensrt

@@ -77,6 +77,26 @@ TEST(Sampler, BlocksAreTheSameBitsAsOneDimensionAtATime) {
   }
 }
 
+TEST(Sampler, PixelSeedsGiveTheSameBits) {
+  // A Sampler made from its pixel's table of seeds must equal one made from
+  // (seed, pixel): inside the table, across its end and beyond it.
+  std::uint32_t state = 11;
+  const auto next = [&] { return state = hashCombine(state, 0x2468aceu); };
+  PixelSeeds seeds;
+  for (int n = 0; n < 2000; ++n) {
+    const std::uint64_t seed = next(), pixel = next() % 1000000;
+    const std::uint32_t dimensions = 1 + next() % 40, sample = next() % 1024;
+    seeds.reset(seed, pixel, dimensions);  // the same object, reused like the renderer's
+    const Sampler plain(seed, pixel, sample), tabled(seeds, sample);
+    for (std::uint32_t first = 0; first < seeds.dimensions() + 12; ++first) {
+      ASSERT_EQ(tabled.get2D(first), plain.get2D(first)) << "dimension " << first << " of " << dimensions;
+      ASSERT_EQ(tabled.get1D(first), plain.get1D(first));
+      const SampleBlock a = tabled.block(first), b = plain.blockScalar(first);
+      for (std::uint32_t k = 0; k < SampleBlock::kDims; ++k) ASSERT_EQ(a.get2D(k), b.get2D(k));
+    }
+  }
+}
+
 TEST(Sampler, ValuesAreInTheUnitInterval) {
   for (std::uint32_t i = 0; i < 4096; ++i) {
     const Sampler s(7, 12345, i);
