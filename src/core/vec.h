@@ -112,11 +112,19 @@ Vec3<T> normalize(const Vec3<T>& v) {
 // v scaled to unit length, or nullopt when v is zero or not finite. When its
 // squared length under- or overflows (a normal of 1e-25 from a fuzzed glTF),
 // v is first scaled by its largest component so the result is still unit.
+// (The rare rescaling is out of line so that the common case inlines: the
+// renderer calls this at every hit.)
 template <class T>
-std::optional<Vec3<T>> unitVector(const Vec3<T>& v) {
+[[gnu::cold, gnu::noinline]] std::optional<Vec3<T>> unitVectorRescaled(const Vec3<T>& v);
+template <class T>
+inline std::optional<Vec3<T>> unitVector(const Vec3<T>& v) {
   const T len2 = dot(v, v);
-  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max())
+  if (len2 >= std::numeric_limits<T>::min() && len2 <= std::numeric_limits<T>::max()) [[likely]]
     return v / std::sqrt(len2);
+  return unitVectorRescaled(v);
+}
+template <class T>
+std::optional<Vec3<T>> unitVectorRescaled(const Vec3<T>& v) {
   if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return std::nullopt;
   const T ax = std::abs(v.x), ay = std::abs(v.y), az = std::abs(v.z);
   const T m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
