@@ -192,6 +192,22 @@ ExitPupilBounds::ExitPupilBounds(const LensSystem& lens, double filmZ, double ma
     for (std::size_t k = 1; k + 1 < v.size(); ++k)
       poly.cdf.push_back(poly.cdf.back() + 0.5 * cross2(v[0], v[k], v[k + 1]));
     poly.area = poly.cdf.back();
+    poly.invArea = 1.0 / poly.area;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k)
+      poly.triangles.push_back(
+          {poly.cdf[k - 1], std::max(poly.cdf[k] - poly.cdf[k - 1], 1e-300), v[k], v[k + 1]});
+    // Eight buckets per triangle: a target rarely shares its bucket with a
+    // triangle boundary, so the correction in sample() rarely runs. Only
+    // for an increasing cdf (a convex hull's fan, always in practice), where
+    // that correction finds what upper_bound would.
+    if (!std::is_sorted(poly.cdf.begin(), poly.cdf.end()) || poly.triangles.size() > 65535) continue;
+    const std::size_t buckets = 8 * poly.triangles.size();
+    poly.bucketScale = static_cast<double>(buckets) / poly.area;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      const double target = static_cast<double>(b) / poly.bucketScale;
+      const auto it = std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target);
+      poly.firstTriangle.push_back(static_cast<std::uint16_t>(it - poly.cdf.begin() - 1));
+    }
   }
 }
 
@@ -219,20 +235,34 @@ std::optional<PupilSample> ExitPupilBounds::sample(Vec2d filmPoint, Vec2d u) con
   const int i = intervalOf(r);
   if (i < 0 || polygons_[i].area <= 0.0) return std::nullopt;
   const Polygon& poly = polygons_[i];
-  // Pick a fan triangle by area, reuse u.x within it, then uniform in the triangle.
+  // Pick a fan triangle by area, reuse u.x within it, then uniform in the
+  // triangle. The triangle is the one std::upper_bound over the inner cdf
+  // values would give: the first whose end exceeds the target, else the
+  // last. The bucket's guess moves by those comparisons until it is that one
+  // (the cdf increases: every fan triangle of a convex hull has an area).
   const double target = u.x * poly.area;
-  const auto it = std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target);
-  const std::size_t k = static_cast<std::size_t>(it - poly.cdf.begin());  // triangle (v0, v[k], v[k+1])
-  const double lo = poly.cdf[k - 1], hi = poly.cdf[k];
-  const double ux = std::clamp((target - lo) / std::max(hi - lo, 1e-300), 0.0, 1.0);
+  std::size_t k;
+  if (!poly.firstTriangle.empty()) [[likely]] {
+    const double bucket = target * poly.bucketScale;
+    const std::size_t lastBucket = poly.firstTriangle.size() - 1;
+    k = poly.firstTriangle[bucket >= 0.0
+                               ? std::min(static_cast<std::size_t>(std::min(bucket, 1e9)), lastBucket)
+                               : 0];
+    const std::size_t last = poly.triangles.size() - 1;
+    while (k < last && !(target < poly.triangles[k + 1].lo)) ++k;
+    while (k > 0 && target < poly.triangles[k].lo) --k;
+  } else {
+    k = static_cast<std::size_t>(std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target) -
+                                 poly.cdf.begin() - 1);
+  }
+  const Triangle& tri = poly.triangles[k];
+  const double ux = std::clamp((target - tri.lo) / tri.span, 0.0, 1.0);
   const double s = std::sqrt(ux);
   const double b0 = 1.0 - s, b1 = u.y * s;
   const Vec2d& A = poly.vertices[0];
-  const Vec2d& B = poly.vertices[k];
-  const Vec2d& C = poly.vertices[k + 1];
-  const Vec2d q = A * b0 + B * b1 + C * (1.0 - b0 - b1);
+  const Vec2d q = A * b0 + tri.b * b1 + tri.c * (1.0 - b0 - b1);
   const double cosPhi = r > 0 ? filmPoint.x / r : 1.0, sinPhi = r > 0 ? filmPoint.y / r : 0.0;
-  return PupilSample{{q.x * cosPhi - q.y * sinPhi, q.x * sinPhi + q.y * cosPhi, planeZ_}, 1.0 / poly.area};
+  return PupilSample{{q.x * cosPhi - q.y * sinPhi, q.x * sinPhi + q.y * cosPhi, planeZ_}, poly.invArea};
 }
 
 std::vector<Vec2d> ExitPupilBounds::polygon(Vec2d filmPoint) const {
@@ -256,7 +286,7 @@ double ExitPupilBounds::pdf(Vec2d filmPoint, Vec2d pupilPoint) const {
   const auto& v = polygons_[i].vertices;
   for (std::size_t k = 0; k < v.size(); ++k)
     if (cross2(v[k], v[(k + 1) % v.size()], q) < 0.0) return 0.0;
-  return 1.0 / polygons_[i].area;
+  return polygons_[i].invArea;
 }
 
 }  // namespace lensrt

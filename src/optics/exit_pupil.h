@@ -8,6 +8,7 @@
 // Sampling a film point rotates its interval's polygon to the point's azimuth.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -48,10 +49,25 @@ class ExitPupilBounds {
   double area(double filmRadius) const;
 
  private:
+  // A fan triangle (vertices[0], b, c) as sample() takes it: its start in
+  // the cdf and its area as the division sees it, so a sample reads one
+  // small record instead of three arrays.
+  struct Triangle {
+    double lo = 0.0;    // cdf before it
+    double span = 0.0;  // std::max(cdf after - lo, 1e-300)
+    Vec2d b, c;
+  };
   struct Polygon {
     std::vector<Vec2d> vertices;  // counter-clockwise, convex
     std::vector<double> cdf;      // fan triangles from vertices[0], cumulative area
     double area = 0.0;
+    double invArea = 0.0;  // 1.0 / area: the pdf
+    std::vector<Triangle> triangles;
+    // The fan triangle upper_bound would pick, for targets (u.x * area) in
+    // equal steps: a first guess that sample() corrects by exact comparisons
+    // (usually none), instead of a binary search's unpredictable branches.
+    std::vector<std::uint16_t> firstTriangle;
+    double bucketScale = 0.0;  // buckets per unit of target
   };
   int intervalOf(double filmRadius) const;
 
