@@ -266,11 +266,11 @@ void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays, std::spa
     trace_lanes::Lanes L;  // lanes past `lanes` stay dead
     for (std::size_t l = 0; l < lanes; ++l) {
       const LensRay& r = rays[first + l];
-      L.alive[l] = validInput<true>(r);
-      const Vec3d d = L.alive[l] ? normalize(r.direction) : Vec3d{};
       L.ox[l] = r.origin.x, L.oy[l] = r.origin.y, L.oz[l] = r.origin.z;
-      L.dx[l] = d.x, L.dy[l] = d.y, L.dz[l] = d.z;
+      L.dx[l] = r.direction.x, L.dy[l] = r.direction.y, L.dz[l] = r.direction.z;
+      L.alive[l] = ~0ll;
     }
+    trace_lanes::start(L);  // validInput<true> and normalize
     // Per lane: the index on the film side of the next surface (trace()'s nFrom).
     const bool spectral = !wavelengthsNm.empty();
     std::array<double, kTraceLanes> wavelength{}, nFrom{}, eta{};
@@ -300,18 +300,27 @@ void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays, std::spa
           trace_lanes::sphereStep(spheres[i], L);
         continue;
       }
+      // A flat surface that bends no lane (the stop; at the d line, any
+      // between equal indices) in vector registers too.
+      if (s.isStop || (!spectral && !s.refracts)) {
+        trace_lanes::planeStep(spheres[i], L);
+        continue;
+      }
       for (std::size_t l = 0; l < lanes; ++l) {
         if (!L.alive[l]) continue;
         Vec3d o{L.ox[l], L.oy[l], L.oz[l]}, d{L.dx[l], L.dy[l], L.dz[l]};
-        L.alive[l] = step<true>(s, spectral ? eta[l] : spheres[i].eta, o, d, nullptr);
+        L.alive[l] = step<true>(s, spectral ? eta[l] : spheres[i].eta, o, d, nullptr) ? ~0ll : 0;
         L.ox[l] = o.x, L.oy[l] = o.y, L.oz[l] = o.z;
         L.dx[l] = d.x, L.dy[l] = d.y, L.dz[l] = d.z;
       }
     }
+    trace_lanes::finish(L);  // finished(): finite, then the direction normalised
     for (std::size_t l = 0; l < lanes; ++l)
-      out[first + l] = L.alive[l] ? finished({L.ox[l], L.oy[l], L.oz[l]}, {L.dx[l], L.dy[l], L.dz[l]},
-                                             rays[first + l].transmittance)
-                                  : std::nullopt;
+      out[first + l] =
+          L.alive[l]
+              ? std::optional<LensRay>(LensRay{
+                    {L.ox[l], L.oy[l], L.oz[l]}, {L.dx[l], L.dy[l], L.dz[l]}, rays[first + l].transmittance})
+              : std::nullopt;
   }
 }
 

@@ -64,7 +64,7 @@ class LensSystem {
   // traceFromFilm(rays[i], wavelengthsNm[i]).
   void traceFromFilm(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
                      std::span<std::optional<LensRay>> out) const;
-  static constexpr std::size_t kTraceLanes = 8;
+  static constexpr std::size_t kTraceLanes = trace_lanes::kLanes;
 
   std::optional<LensRay> traceFromScene(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
                                         std::vector<Vec3d>* path = nullptr) const;

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 
 namespace lensrt::trace_lanes {
 
@@ -28,6 +29,22 @@ LENSRT_AVX inline V load(const double* p) {
 LENSRT_AVX inline void store(double* p, V v) {
   std::memcpy(p, &v, sizeof v);
 }
+LENSRT_AVX inline M loadMask(const long long* p) {
+  M m;
+  std::memcpy(&m, p, sizeof m);
+  return m;
+}
+LENSRT_AVX inline void storeMask(long long* p, M m) {
+  std::memcpy(p, &m, sizeof m);
+}
+LENSRT_AVX inline bool none(M m) {
+  return (m[0] | m[1] | m[2] | m[3]) == 0;
+}
+// std::isfinite, lane by lane: |v| <= DBL_MAX (false for NaN).
+LENSRT_AVX inline M finite(V v) {
+  constexpr long long kNoSign = 0x7fffffffffffffffll;
+  return (V)((M)v & M{kNoSign, kNoSign, kNoSign, kNoSign}) <= splat(std::numeric_limits<double>::max());
+}
 // m ? a : b, lane by lane.
 LENSRT_AVX inline V select(M m, V a, V b) {
   return (V)(((M)a & m) | ((M)b & ~m));
@@ -43,6 +60,8 @@ template <bool kRefracts>
 LENSRT_AVX void step(const Sphere& s, const double* etaLanes, Lanes& L) {
   const V R = splat(s.radius), twoR = splat(2.0 * s.radius), zero = splat(0.0);
   for (std::size_t g = 0; g < kLanes; g += kWidth) {
+    const M alive = loadMask(&L.alive[g]);
+    if (none(alive)) continue;  // a blocked group, or lanes past the batch's end
     const V px = load(&L.ox[g]), py = load(&L.oy[g]), pz = load(&L.oz[g]) - splat(s.z);
     const V dx = load(&L.dx[g]), dy = load(&L.dy[g]), dz = load(&L.dz[g]);
     const V zc = pz - R;
@@ -79,7 +98,47 @@ LENSRT_AVX void step(const Sphere& s, const double* etaLanes, Lanes& L) {
       store(&L.dz[g], dzOut);
     }
     ok &= dzOut < zero;
-    for (std::size_t l = 0; l < kWidth; ++l) L.alive[g + l] = L.alive[g + l] && ok[l] != 0;
+    storeMask(&L.alive[g], alive & ok);
+  }
+}
+
+// Mirrors the flat branch of LensSystem::step<true> with eta 0.
+LENSRT_AVX void flatStep(const Sphere& s, Lanes& L) {
+  const V zero = splat(0.0);
+  for (std::size_t g = 0; g < kLanes; g += kWidth) {
+    const M alive = loadMask(&L.alive[g]);
+    if (none(alive)) continue;
+    const V px = load(&L.ox[g]), py = load(&L.oy[g]), pz = load(&L.oz[g]) - splat(s.z);
+    const V dx = load(&L.dx[g]), dy = load(&L.dy[g]), dz = load(&L.dz[g]);
+    M ok = dz != zero;
+    const V t = -pz / dz;
+    ok &= t >= splat(-1e-9);
+    const V hx = px + dx * t, hy = py + dy * t, hz = pz + dz * t;
+    ok &= ~(hx * hx + hy * hy > splat(s.apertureRadius2));
+    store(&L.ox[g], hx);
+    store(&L.oy[g], hy);
+    store(&L.oz[g], hz + splat(s.z));
+    storeMask(&L.alive[g], alive & ok);
+  }
+}
+
+// Mirrors validInput<true> and normalize() (start) or finished() (end):
+// v / sqrt(v.x * v.x + v.y * v.y + v.z * v.z).
+template <bool kStart>
+LENSRT_AVX void startOrFinish(Lanes& L) {
+  const V zero = splat(0.0);
+  for (std::size_t g = 0; g < kLanes; g += kWidth) {
+    const M alive = loadMask(&L.alive[g]);
+    if (none(alive)) continue;
+    const V dx = load(&L.dx[g]), dy = load(&L.dy[g]), dz = load(&L.dz[g]);
+    M ok = finite(load(&L.ox[g])) & finite(load(&L.oy[g])) & finite(load(&L.oz[g])) & finite(dx) &
+           finite(dy) & finite(dz);
+    if constexpr (kStart) ok &= dz < zero;
+    const V len = sqrt(dx * dx + dy * dy + dz * dz);
+    store(&L.dx[g], dx / len);
+    store(&L.dy[g], dy / len);
+    store(&L.dz[g], dz / len);
+    storeMask(&L.alive[g], alive & ok);
   }
 }
 
@@ -101,6 +160,18 @@ void sphereStep(const Sphere& s, const std::array<double, kLanes>& eta, Lanes& l
   step<true>(s, eta.data(), lanes);
 }
 
+void planeStep(const Sphere& s, Lanes& lanes) {
+  flatStep(s, lanes);
+}
+
+void start(Lanes& lanes) {
+  startOrFinish<true>(lanes);
+}
+
+void finish(Lanes& lanes) {
+  startOrFinish<false>(lanes);
+}
+
 #else
 
 bool available() {
@@ -108,6 +179,9 @@ bool available() {
 }
 void sphereStep(const Sphere&, Lanes&) {}
 void sphereStep(const Sphere&, const std::array<double, kLanes>&, Lanes&) {}
+void planeStep(const Sphere&, Lanes&) {}
+void start(Lanes&) {}
+void finish(Lanes&) {}
 
 #endif
 

@@ -11,11 +11,16 @@
 
 namespace lensrt::trace_lanes {
 
-inline constexpr std::size_t kLanes = 8;
+// Thirty-two rays in flight: a surface's step is a chain of dependent square
+// roots, and eight groups of four independent chains keep the vector units
+// busy where two left them waiting on latency.
+inline constexpr std::size_t kLanes = 32;
 
 struct Lanes {
   alignas(32) std::array<double, kLanes> ox{}, oy{}, oz{}, dx{}, dy{}, dz{};
-  std::array<bool, kLanes> alive{};
+  // All ones while the ray is alive, 0 once blocked: the comparisons' own
+  // masks, so the steps combine them without converting.
+  alignas(32) std::array<long long, kLanes> alive{};
 };
 
 // A spherical surface as the step needs it (see LensSystem::TraceSurface).
@@ -36,5 +41,15 @@ void sphereStep(const Sphere& s, Lanes& lanes);
 // The same with each lane's own index ratio (its wavelength), 0 where the
 // surface does not bend that lane's ray; s.eta is ignored.
 void sphereStep(const Sphere& s, const std::array<double, kLanes>& eta, Lanes& lanes);
+// LensSystem::step<true> through a flat surface that does not bend the ray
+// (the stop), on every lane that is alive.
+void planeStep(const Sphere& s, Lanes& lanes);
+// The start of LensSystem's trace on every lane that is alive: those whose
+// origin or direction is not finite, or whose direction does not point
+// toward the scene (dz >= 0), die; the others' directions are normalised.
+void start(Lanes& lanes);
+// The end of the trace (LensSystem's finished()): lanes whose origin or
+// direction is not finite die, the others' directions are normalised.
+void finish(Lanes& lanes);
 
 }  // namespace lensrt::trace_lanes
