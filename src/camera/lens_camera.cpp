@@ -122,18 +122,32 @@ std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& 
 void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
                                          std::span<std::optional<CameraRay>> out) const {
   if (polygon_ || params_.mask) return Camera::generateCameraSpaceRays(samples, out);
-  // In chunks on the stack: the lens traces a chunk's rays together.
+  // In chunks on the stack: the bounds sample and the lens traces a chunk's
+  // rays together.
   constexpr std::size_t kChunk = 4 * LensSystem::kTraceLanes;
+  std::array<Vec2d, kChunk> filmPoints, lensSamples;
+  std::array<PupilSample, kChunk> pupil;
   std::array<LensRay, kChunk> rays;
   std::array<double, kChunk> weights, wavelengths;
   std::array<std::optional<LensRay>, kChunk> traced;
   for (std::size_t first = 0; first < samples.size(); first += kChunk) {
     const std::size_t n = std::min(kChunk, samples.size() - first);
     for (std::size_t i = 0; i < n; ++i) {
-      const PupilRay pr = pupilRay(samples[first + i]);
-      rays[i] = pr.ray;  // a zero direction fails the trace: blocked
-      weights[i] = pr.weight;
-      wavelengths[i] = samples[first + i].wavelengthNm;
+      const CameraSample& s = samples[first + i];
+      const Vec2d up = uprightSensorPointMm(film(), s.film);
+      filmPoints[i] = {-up.x, -up.y};  // the inverted real image
+      lensSamples[i] = {s.lens.x, s.lens.y};
+      wavelengths[i] = s.wavelengthNm;
+    }
+    bounds_->sample(std::span(filmPoints).first(n), std::span(lensSamples).first(n),
+                    std::span(pupil).first(n));
+    // pupilRay() on each sample, from its pupil sample (a pdf of 0: none).
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3d p{filmPoints[i].x, filmPoints[i].y, filmZ_};
+      const PupilSample& ps = pupil[i];
+      const bool none = ps.pdf == 0.0;
+      rays[i] = {p, none ? Vec3d{} : ps.point - p};  // a zero direction fails the trace: blocked
+      weights[i] = none ? 0.0 : scale_ * irradianceIntegrand(p, ps.point) / ps.pdf;
     }
     if (dispersion_)
       lens_->traceFromFilm(std::span(rays).first(n), std::span(wavelengths).first(n),

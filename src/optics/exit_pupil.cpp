@@ -1,11 +1,14 @@
 #include "optics/exit_pupil.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <thread>
 
 #include "core/constants.h"
+#include "optics/trace_lanes.h"
 
 namespace lensrt {
 namespace {
@@ -230,6 +233,21 @@ double ExitPupilBounds::area(double filmRadius) const {
   return i < 0 ? 0.0 : polygons_[i].area;
 }
 
+std::size_t ExitPupilBounds::triangleOf(const Polygon& poly, double target) {
+  if (poly.firstTriangle.empty()) [[unlikely]]
+    return static_cast<std::size_t>(std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target) -
+                                    poly.cdf.begin() - 1);
+  const double bucket = target * poly.bucketScale;
+  const std::size_t lastBucket = poly.firstTriangle.size() - 1;
+  std::size_t k =
+      poly.firstTriangle[bucket >= 0.0 ? std::min(static_cast<std::size_t>(std::min(bucket, 1e9)), lastBucket)
+                                       : 0];
+  const std::size_t last = poly.triangles.size() - 1;
+  while (k < last && !(target < poly.triangles[k + 1].lo)) ++k;
+  while (k > 0 && target < poly.triangles[k].lo) --k;
+  return k;
+}
+
 std::optional<PupilSample> ExitPupilBounds::sample(Vec2d filmPoint, Vec2d u) const {
   const double r = filmRadius(filmPoint);
   const int i = intervalOf(r);
@@ -241,21 +259,7 @@ std::optional<PupilSample> ExitPupilBounds::sample(Vec2d filmPoint, Vec2d u) con
   // last. The bucket's guess moves by those comparisons until it is that one
   // (the cdf increases: every fan triangle of a convex hull has an area).
   const double target = u.x * poly.area;
-  std::size_t k;
-  if (!poly.firstTriangle.empty()) [[likely]] {
-    const double bucket = target * poly.bucketScale;
-    const std::size_t lastBucket = poly.firstTriangle.size() - 1;
-    k = poly.firstTriangle[bucket >= 0.0
-                               ? std::min(static_cast<std::size_t>(std::min(bucket, 1e9)), lastBucket)
-                               : 0];
-    const std::size_t last = poly.triangles.size() - 1;
-    while (k < last && !(target < poly.triangles[k + 1].lo)) ++k;
-    while (k > 0 && target < poly.triangles[k].lo) --k;
-  } else {
-    k = static_cast<std::size_t>(std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target) -
-                                 poly.cdf.begin() - 1);
-  }
-  const Triangle& tri = poly.triangles[k];
+  const Triangle& tri = poly.triangles[triangleOf(poly, target)];
   const double ux = std::clamp((target - tri.lo) / tri.span, 0.0, 1.0);
   const double s = std::sqrt(ux);
   const double b0 = 1.0 - s, b1 = u.y * s;
@@ -263,6 +267,109 @@ std::optional<PupilSample> ExitPupilBounds::sample(Vec2d filmPoint, Vec2d u) con
   const Vec2d q = A * b0 + tri.b * b1 + tri.c * (1.0 - b0 - b1);
   const double cosPhi = r > 0 ? filmPoint.x / r : 1.0, sinPhi = r > 0 ? filmPoint.y / r : 0.0;
   return PupilSample{{q.x * cosPhi - q.y * sinPhi, q.x * sinPhi + q.y * cosPhi, planeZ_}, poly.invArea};
+}
+
+namespace {
+
+// Four samples of the batched sample() in flight, lane by lane.
+struct FourSamples {
+  alignas(32) double x[4], y[4];                  // film point
+  alignas(32) double r[4], f[4], cos[4], sin[4];  // its radius, interval coordinate, azimuth
+  alignas(32) double target[4], lo[4], span[4], uy[4], ax[4], ay[4], bx[4], by[4], cx[4], cy[4];
+  alignas(32) double px[4], py[4];  // the pupil point
+};
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+// The square roots and divisions of sample() in AVX registers (the same
+// operations in the same order, no FMA); trace_lanes::available() decides.
+using V = double __attribute__((vector_size(32)));
+using M = long long __attribute__((vector_size(32)));
+#define LENSRT_AVX __attribute__((target("avx2")))
+LENSRT_AVX inline V load(const double* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+LENSRT_AVX inline void store(double* p, V v) {
+  std::memcpy(p, &v, sizeof v);
+}
+LENSRT_AVX inline V splat(double x) {
+  return V{x, x, x, x};
+}
+LENSRT_AVX inline V select(M m, V a, V b) {
+  return (V)(((M)a & m) | ((M)b & ~m));
+}
+// filmRadius(), the interval coordinate filmRadius / maxFilmRadius * n and
+// the azimuth's cosine and sine.
+LENSRT_AVX void polarFour(FourSamples& s, double maxFilmRadius, double intervals) {
+  const V x = load(s.x), y = load(s.y);
+  const V r = __builtin_ia32_sqrtpd256(x * x + y * y);
+  const M positive = r > splat(0.0);
+  store(s.r, r);
+  store(s.f, r / splat(maxFilmRadius) * splat(intervals));
+  store(s.cos, select(positive, x / r, splat(1.0)));
+  store(s.sin, select(positive, y / r, splat(0.0)));
+}
+// The point in the picked triangle, rotated to the film point's azimuth.
+LENSRT_AVX void pointFour(FourSamples& s) {
+  const V zero = splat(0.0), one = splat(1.0);
+  const V t = (load(s.target) - load(s.lo)) / load(s.span);
+  const V ux = select(t < zero, zero, select(one < t, one, t));  // std::clamp(t, 0.0, 1.0)
+  const V root = __builtin_ia32_sqrtpd256(ux);
+  const V b0 = one - root, b1 = load(s.uy) * root, b2 = one - b0 - b1;
+  const V qx = load(s.ax) * b0 + load(s.bx) * b1 + load(s.cx) * b2;
+  const V qy = load(s.ay) * b0 + load(s.by) * b1 + load(s.cy) * b2;
+  const V c = load(s.cos), sn = load(s.sin);
+  store(s.px, qx * c - qy * sn);
+  store(s.py, qx * sn + qy * c);
+}
+#undef LENSRT_AVX
+#else
+void polarFour(FourSamples&, double, double) {}
+void pointFour(FourSamples&) {}
+#endif
+
+}  // namespace
+
+void ExitPupilBounds::sample(std::span<const Vec2d> filmPoints, std::span<const Vec2d> u,
+                             std::span<PupilSample> out) const {
+  if (u.size() != filmPoints.size() || out.size() != filmPoints.size())
+    throw std::invalid_argument("ExitPupilBounds::sample: as many samples and outputs as film points");
+  std::size_t first = 0;
+  if (trace_lanes::available()) {
+    const double limit = maxFilmRadius_ * (1.0 + 1e-9);  // intervalOf()'s
+    const int n = static_cast<int>(polygons_.size());
+    FourSamples s;
+    for (; first + 4 <= filmPoints.size(); first += 4) {
+      for (std::size_t l = 0; l < 4; ++l) s.x[l] = filmPoints[first + l].x, s.y[l] = filmPoints[first + l].y;
+      polarFour(s, maxFilmRadius_, n);
+      // The polygon and fan triangle one lane at a time; a lane without
+      // one computes on zeros and gets a pdf of 0.
+      std::array<const Polygon*, 4> poly{};
+      for (std::size_t l = 0; l < 4; ++l) {
+        if (s.r[l] <= limit) {
+          const Polygon& p = polygons_[std::clamp(static_cast<int>(s.f[l]), 0, n - 1)];
+          if (!(p.area <= 0.0)) poly[l] = &p;  // sample()'s test, NaN included
+        }
+        s.uy[l] = u[first + l].y;
+        if (!poly[l]) {
+          s.target[l] = s.lo[l] = s.ax[l] = s.ay[l] = s.bx[l] = s.by[l] = s.cx[l] = s.cy[l] = 0.0;
+          s.span[l] = 1.0;
+          continue;
+        }
+        s.target[l] = u[first + l].x * poly[l]->area;
+        const Triangle& tri = poly[l]->triangles[triangleOf(*poly[l], s.target[l])];
+        s.lo[l] = tri.lo, s.span[l] = tri.span;
+        s.ax[l] = poly[l]->vertices[0].x, s.ay[l] = poly[l]->vertices[0].y;
+        s.bx[l] = tri.b.x, s.by[l] = tri.b.y, s.cx[l] = tri.c.x, s.cy[l] = tri.c.y;
+      }
+      pointFour(s);
+      for (std::size_t l = 0; l < 4; ++l)
+        out[first + l] = poly[l] ? PupilSample{{s.px[l], s.py[l], planeZ_}, poly[l]->invArea} : PupilSample{};
+    }
+  }
+  for (; first < filmPoints.size(); ++first)
+    out[first] = sample(filmPoints[first], u[first]).value_or(PupilSample{});
 }
 
 std::vector<Vec2d> ExitPupilBounds::polygon(Vec2d filmPoint) const {

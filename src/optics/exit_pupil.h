@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "core/vec.h"
@@ -40,6 +41,9 @@ class ExitPupilBounds {
   // ray from that film point can pass (outside the image circle) or the film
   // point is beyond maxFilmRadius.
   std::optional<PupilSample> sample(Vec2d filmPoint, Vec2d u) const;
+  // sample() for many film points, bit for bit; a pdf of 0 where it gives
+  // nullopt. With AVX2, the square roots and divisions four at a time.
+  void sample(std::span<const Vec2d> filmPoints, std::span<const Vec2d> u, std::span<PupilSample> out) const;
   // The pdf `sample` would give for that pupil-plane point (0 outside bounds).
   double pdf(Vec2d filmPoint, Vec2d pupilPoint) const;
   // The bounding polygon for a film point, rotated to its azimuth (lens-space
@@ -70,6 +74,8 @@ class ExitPupilBounds {
     double bucketScale = 0.0;  // buckets per unit of target
   };
   int intervalOf(double filmRadius) const;
+  // The fan triangle (index into triangles) that u.x * area selects.
+  static std::size_t triangleOf(const Polygon& poly, double target);
 
   double planeZ_ = 0.0;
   double filmZ_ = 0.0;
