@@ -1,8 +1,9 @@
 #include "optics/trace_lanes.h"
 
-#include <cstdlib>
 #include <cstring>
 #include <limits>
+
+#include "core/cpu_features.h"
 
 namespace lensrt::trace_lanes {
 
@@ -145,8 +146,7 @@ LENSRT_AVX void startOrFinish(Lanes& L) {
 }  // namespace
 
 bool available() {
-  static const bool avx2 = __builtin_cpu_supports("avx2") && !std::getenv("LENSRT_DISABLE_AVX");
-  return avx2;
+  return avx2Enabled();
 }
 
 void sphereStep(const Sphere& s, Lanes& lanes) {
