@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/constants.h"
+#include "optics/avx_doubles.h"
 #include "optics/trace_lanes.h"
 
 namespace lensrt {
@@ -279,31 +280,15 @@ struct FourSamples {
   alignas(32) double px[4], py[4];  // the pupil point
 };
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if LENSRT_AVX_DOUBLES
 // The square roots and divisions of sample() in AVX registers (the same
 // operations in the same order, no FMA); trace_lanes::available() decides.
-using V = double __attribute__((vector_size(32)));
-using M = long long __attribute__((vector_size(32)));
-#define LENSRT_AVX __attribute__((target("avx2")))
-LENSRT_AVX inline V load(const double* p) {
-  V v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-LENSRT_AVX inline void store(double* p, V v) {
-  std::memcpy(p, &v, sizeof v);
-}
-LENSRT_AVX inline V splat(double x) {
-  return V{x, x, x, x};
-}
-LENSRT_AVX inline V select(M m, V a, V b) {
-  return (V)(((M)a & m) | ((M)b & ~m));
-}
+using namespace avx;
 // filmRadius(), the interval coordinate filmRadius / maxFilmRadius * n and
 // the azimuth's cosine and sine.
 LENSRT_AVX void polarFour(FourSamples& s, double maxFilmRadius, double intervals) {
   const V x = load(s.x), y = load(s.y);
-  const V r = __builtin_ia32_sqrtpd256(x * x + y * y);
+  const V r = avx::sqrt(x * x + y * y);
   const M positive = r > splat(0.0);
   store(s.r, r);
   store(s.f, r / splat(maxFilmRadius) * splat(intervals));
@@ -315,7 +300,7 @@ LENSRT_AVX void pointFour(FourSamples& s) {
   const V zero = splat(0.0), one = splat(1.0);
   const V t = (load(s.target) - load(s.lo)) / load(s.span);
   const V ux = select(t < zero, zero, select(one < t, one, t));  // std::clamp(t, 0.0, 1.0)
-  const V root = __builtin_ia32_sqrtpd256(ux);
+  const V root = avx::sqrt(ux);
   const V b0 = one - root, b1 = load(s.uy) * root, b2 = one - b0 - b1;
   const V qx = load(s.ax) * b0 + load(s.bx) * b1 + load(s.cx) * b2;
   const V qy = load(s.ay) * b0 + load(s.by) * b1 + load(s.cy) * b2;
@@ -323,7 +308,6 @@ LENSRT_AVX void pointFour(FourSamples& s) {
   store(s.px, qx * c - qy * sn);
   store(s.py, qx * sn + qy * c);
 }
-#undef LENSRT_AVX
 #else
 void polarFour(FourSamples&, double, double) {}
 void pointFour(FourSamples&) {}

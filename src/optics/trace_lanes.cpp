@@ -1,58 +1,17 @@
 #include "optics/trace_lanes.h"
 
 #include <cstring>
-#include <limits>
 
 #include "core/cpu_features.h"
+#include "optics/avx_doubles.h"
 
 namespace lensrt::trace_lanes {
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if LENSRT_AVX_DOUBLES
 
 namespace {
 
-// GCC/clang vector extensions: four doubles, and the all-ones/zero masks
-// their comparisons give.
-using V = double __attribute__((vector_size(32)));
-using M = long long __attribute__((vector_size(32)));
-constexpr std::size_t kWidth = 4;
-
-#define LENSRT_AVX __attribute__((target("avx2")))
-
-LENSRT_AVX inline V splat(double x) {
-  return V{x, x, x, x};
-}
-LENSRT_AVX inline V load(const double* p) {
-  V v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-LENSRT_AVX inline void store(double* p, V v) {
-  std::memcpy(p, &v, sizeof v);
-}
-LENSRT_AVX inline M loadMask(const long long* p) {
-  M m;
-  std::memcpy(&m, p, sizeof m);
-  return m;
-}
-LENSRT_AVX inline void storeMask(long long* p, M m) {
-  std::memcpy(p, &m, sizeof m);
-}
-LENSRT_AVX inline bool none(M m) {
-  return (m[0] | m[1] | m[2] | m[3]) == 0;
-}
-// std::isfinite, lane by lane: |v| <= DBL_MAX (false for NaN).
-LENSRT_AVX inline M finite(V v) {
-  constexpr long long kNoSign = 0x7fffffffffffffffll;
-  return (V)((M)v & M{kNoSign, kNoSign, kNoSign, kNoSign}) <= splat(std::numeric_limits<double>::max());
-}
-// m ? a : b, lane by lane.
-LENSRT_AVX inline V select(M m, V a, V b) {
-  return (V)(((M)a & m) | ((M)b & ~m));
-}
-LENSRT_AVX inline V sqrt(V v) {
-  return __builtin_ia32_sqrtpd256(v);
-}
+using namespace avx;
 
 // Mirrors LensSystem::step<true> line by line; `ok` replaces its early returns.
 // `etaLanes`: each lane's index ratio (0: that lane is not bent), or null for

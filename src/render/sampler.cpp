@@ -13,32 +13,79 @@
 namespace lensrt {
 namespace {
 
-std::uint32_t reverseBits(std::uint32_t x) {
-#if defined(__clang__)
-  return __builtin_bitreverse32(x);
-#else
-#if defined(__GNUC__)
-  x = __builtin_bswap32(x);  // the bytes in reverse order, then the bits within each byte
-#else
-  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-  x = (x >> 16) | (x << 16);
-#endif
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  return ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-#endif
+// The sampler's integer steps, written once for one value (std::uint32_t) and
+// for eight AVX2 lanes (U8 below): the same operations lane by lane, so the
+// same bits. In place and by reference (a vector passed by value outside AVX
+// code would change the ABI), always inlined.
+
+// A strong 32-bit mixer (lowbias32, C. Wellons) over seed and value.
+template <class T>
+[[gnu::always_inline]] inline void hashCombineInto(T& x, const T& seed, const T& v) {
+  x = seed ^ (v + 0x9e3779b9u + (seed << 6) + (seed >> 2));
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
 }
 
 // Laine-Karras style permutation: each bit only depends on lower bits, so after
 // bit reversal it is a nested uniform (Owen) scramble. Constants from Burley 2020
 // with the improved mixing by N. Vegdahl.
-std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
+template <class T>
+[[gnu::always_inline]] inline void laineKarrasInPlace(T& x, const T& seed) {
   x ^= x * 0x3d20adeau;
   x += seed;
   x *= (seed >> 16) | 1u;
   x ^= x * 0x05526c56u;
   x ^= x * 0x53a22864u;
+}
+
+// The bits of each byte in reverse order (a bit reversal after a byte swap).
+template <class T>
+[[gnu::always_inline]] inline void reverseBitsInBytes(T& x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+}
+
+// The second Sobol dimension of index i, bit reversed: reverseBits(sobol1(i)).
+// Its generator columns are v_k = 2^31 (1 + x)^k over GF(2), x a right shift,
+// so by Lucas' theorem bit 31 - m of sobol1(i) is the XOR of the bits k of i
+// whose bit set contains m's: a superset-XOR transform over the bit
+// positions, five shift-and-mask steps (no table, so SIMD lanes need no gather).
+template <class T>
+[[gnu::always_inline]] inline void sobol1ReversedInPlace(T& i) {
+  i ^= (i >> 1) & 0x55555555u;
+  i ^= (i >> 2) & 0x33333333u;
+  i ^= (i >> 4) & 0x0F0F0F0Fu;
+  i ^= (i >> 8) & 0x00FF00FFu;
+  i ^= (i >> 16) & 0x0000FFFFu;
+}
+
+std::uint32_t reverseBits(std::uint32_t x) {
+#if defined(__clang__)
+  return __builtin_bitreverse32(x);
+#else
+#if defined(__GNUC__)
+  x = __builtin_bswap32(x);
+#else
+  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
+  x = (x >> 16) | (x << 16);
+#endif
+  reverseBitsInBytes(x);
   return x;
+#endif
+}
+
+std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
+  laineKarrasInPlace(x, seed);
+  return x;
+}
+
+std::uint32_t sobol1Reversed(std::uint32_t i) {
+  sobol1ReversedInPlace(i);
+  return i;
 }
 
 // A nested uniform (Owen) scramble of x is reverseBits(laineKarras(reverseBits(x), seed)).
@@ -47,20 +94,6 @@ std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
 // and the first Sobol dimension of the shuffled index (van der Corput: the index
 // reversed) is that reversed index itself; only what enters a point's scramble and
 // the values handed out are reversed. Three reversals per 2D point instead of seven.
-
-// The second Sobol dimension of index i, bit reversed: reverseBits(sobol1(i)).
-// Its generator columns are v_k = 2^31 (1 + x)^k over GF(2), x a right shift,
-// so by Lucas' theorem bit 31 - m of sobol1(i) is the XOR of the bits k of i
-// whose bit set contains m's: a superset-XOR transform over the bit
-// positions, five shift-and-mask steps (no table, so SIMD lanes need no gather).
-constexpr std::uint32_t sobol1Reversed(std::uint32_t i) {
-  i ^= (i >> 1) & 0x55555555u;
-  i ^= (i >> 2) & 0x33333333u;
-  i ^= (i >> 4) & 0x0F0F0F0Fu;
-  i ^= (i >> 8) & 0x00FF00FFu;
-  i ^= (i >> 16) & 0x0000FFFFu;
-  return i;
-}
 
 float toUnitFloat(std::uint32_t x) {
   // 24 high bits: exactly representable, strictly below 1.
@@ -81,20 +114,12 @@ LENSRT_AVX2 inline U8 splat(std::uint32_t v) {
   return U8{} + v;
 }
 LENSRT_AVX2 inline U8 hashCombine8(U8 seed, U8 v) {
-  U8 x = seed ^ (v + 0x9e3779b9u + (seed << 6) + (seed >> 2));
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
+  U8 x;
+  hashCombineInto(x, seed, v);
   return x;
 }
 LENSRT_AVX2 inline U8 laineKarras8(U8 x, U8 seed) {
-  x ^= x * 0x3d20adeau;
-  x += seed;
-  x *= (seed >> 16) | 1u;
-  x ^= x * 0x05526c56u;
-  x ^= x * 0x53a22864u;
+  laineKarrasInPlace(x, seed);
   return x;
 }
 LENSRT_AVX2 inline U8 reverseBits8(U8 x) {
@@ -102,16 +127,11 @@ LENSRT_AVX2 inline U8 reverseBits8(U8 x) {
   const __m256i byteSwap = _mm256_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12,  //
                                             3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12);
   x = (U8)_mm256_shuffle_epi8((__m256i)x, byteSwap);
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  return ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+  reverseBitsInBytes(x);
+  return x;
 }
 LENSRT_AVX2 inline U8 sobol1Reversed8(U8 i) {
-  i ^= (i >> 1) & 0x55555555u;
-  i ^= (i >> 2) & 0x33333333u;
-  i ^= (i >> 4) & 0x0F0F0F0Fu;
-  i ^= (i >> 8) & 0x00FF00FFu;
-  i ^= (i >> 16) & 0x0000FFFFu;
+  sobol1ReversedInPlace(i);
   return i;
 }
 LENSRT_AVX2 inline void storeUnitFloats(float* out, U8 x) {
@@ -162,13 +182,8 @@ static_assert(SampleBlock::kDims == 8);
 }  // namespace
 
 std::uint32_t hashCombine(std::uint32_t seed, std::uint32_t v) {
-  // A strong 32-bit mixer (lowbias32, C. Wellons) over seed and value.
-  std::uint32_t x = seed ^ (v + 0x9e3779b9u + (seed << 6) + (seed >> 2));
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
+  std::uint32_t x;
+  hashCombineInto(x, seed, v);
   return x;
 }
 
