@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include "core/constants.h"
 #include "core/warnings.h"
@@ -123,6 +125,47 @@ TEST(ExitPupil, SamplesAreUniformWithTheReportedPdf) {
   ASSERT_GT(dof, 3);
   // Generous: chi2 of a correct sampler is ~dof; probe discretisation adds a little.
   EXPECT_LT(chi2, 3.0 * dof + 30) << "dof " << dof;
+}
+
+// The lens camera samples a chunk of film points in one call (with AVX2 four
+// lanes at a time): the same bits as sample() point by point, a pdf of 0 where
+// sample() has none. Points all over the frame, beyond the image circle, on
+// the axis and on the x axis; u at 0 and just below 1.
+TEST(ExitPupil, BatchedSampleEqualsOneAtATime) {
+  for (const char* name : {"dgauss-50mm", "wide-22mm", "fisheye-10mm"}) {
+    const LensSystem lens = stopped(name, 4.0);
+    const double filmZ = lens.rearZ() + focusFilmDistance(lens, 3000.0);
+    const ExitPupilBounds bounds(lens, filmZ, kHalfDiagonal);
+    SplitMix64 rng(17);
+    std::vector<Vec2d> film, u;
+    for (int i = 0; i < 20011; ++i) {  // not a multiple of the lane count
+      const double reach = i % 7 == 0 ? 1.3 * kHalfDiagonal : kHalfDiagonal;
+      Vec2d f{(2 * rng.uniform() - 1) * reach, (2 * rng.uniform() - 1) * reach};
+      if (i % 101 == 0) f = {0, 0};
+      if (i % 103 == 0) f.y = 0;
+      Vec2d v{rng.uniform(), rng.uniform()};
+      if (i % 11 == 0) v.x = 0;
+      if (i % 13 == 0) v.x = std::nextafter(1.0, 0.0);
+      film.push_back(f);
+      u.push_back(v);
+    }
+    std::vector<PupilSample> batched(film.size());
+    bounds.sample(film, u, batched);
+    const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    int none = 0;
+    for (std::size_t i = 0; i < film.size(); ++i) {
+      const std::optional<PupilSample> one = bounds.sample(film[i], u[i]);
+      if (!one) {
+        ++none;
+        ASSERT_EQ(batched[i].pdf, 0.0) << name << " point " << i;
+        continue;
+      }
+      ASSERT_TRUE(same(one->pdf, batched[i].pdf) && same(one->point.x, batched[i].point.x) &&
+                  same(one->point.y, batched[i].point.y) && same(one->point.z, batched[i].point.z))
+          << name << " point " << i;
+    }
+    EXPECT_GT(none, 0) << name;  // some points lie beyond the image circle
+  }
 }
 
 TEST(ExitPupil, NoBoundsBeyondTheFilmExtent) {
