@@ -19,6 +19,8 @@ namespace {
 // Camera samples per generateRays call: enough for a camera to batch, few
 // enough to stay in cache whatever the spp.
 constexpr std::uint64_t kCameraBatch = 256;
+// The longest per-pixel table of sampler seeds; deeper paths hash their own.
+constexpr std::uint32_t kSeedTableDimensions = 256;
 
 // Samples [first, last) of every pixel of the state's region.
 void renderPass(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
@@ -47,7 +49,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
     samplers.reserve(batch);
     // The seeds of the pixels a batch covers, shared by their samples (the
     // table is as long as a path's dimensions, up to a cap for deep paths).
-    const std::uint32_t dimensions = std::min<std::uint32_t>(integrator.sampleDimensions(), 256);
+    const std::uint32_t dimensions = std::min(integrator.sampleDimensions(), kSeedTableDimensions);
     std::vector<PixelSeeds> pixelSeeds(batch / spp + 2);
     for (int y = y0; y < y1; ++y) {
       for (std::uint64_t first = 0; first < rowSamples; first += batch) {

@@ -103,6 +103,11 @@ float toUnitFloat(std::uint32_t x) {
 // A dimension's three scramble seeds are its seed hashed with these.
 constexpr std::uint32_t kShuffleSalt = 0x51ed270bu, kXSalt = 0x68bc21ebu, kYSalt = 0x02e5be93u;
 
+DimensionSeeds hashSeeds(std::uint32_t pixelSeed, std::uint32_t dimension) {
+  const std::uint32_t dimSeed = hashCombine(pixelSeed, dimension);
+  return {hashCombine(dimSeed, kShuffleSalt), hashCombine(dimSeed, kXSalt), hashCombine(dimSeed, kYSalt)};
+}
+
 #if LENSRT_SAMPLER_AVX2
 // The sampler's integer steps on eight dimensions at once (GCC vector
 // extensions in AVX2 registers): the same operations lane by lane, so the
@@ -163,19 +168,20 @@ LENSRT_AVX2 void points8(U8 shuffle, U8 xSeed, U8 ySeed, std::uint32_t reversedI
   storeUnitFloats(ys, reverseBits8(laineKarras8(sobol1Reversed8(index), ySeed)));
 }
 
-// Dimensions first .. first + 7 from the pixel seed.
-LENSRT_AVX2 void block8(std::uint32_t pixelSeed, std::uint32_t reversedIndex, std::uint32_t first, float* xs,
-                        float* ys) {
-  const U8 dimSeed = hashCombine8(splat(pixelSeed), U8{0, 1, 2, 3, 4, 5, 6, 7} + first);
-  points8(hashCombine8(dimSeed, splat(kShuffleSalt)), hashCombine8(dimSeed, splat(kXSalt)),
-          hashCombine8(dimSeed, splat(kYSalt)), reversedIndex, xs, ys);
-}
-
-// The same from a pixel's table of seeds.
+// Dimensions first .. first + 7 from a pixel's table of seeds.
 LENSRT_AVX2 void block8(const std::uint32_t* shuffle, const std::uint32_t* x, const std::uint32_t* y,
                         std::uint32_t reversedIndex, float* xs, float* ys) {
   points8(load8(shuffle), load8(x), load8(y), reversedIndex, xs, ys);
 }
+
+// The same from the pixel seed (dimensions beyond a pixel's table).
+LENSRT_AVX2 void block8(std::uint32_t pixelSeed, std::uint32_t reversedIndex, std::uint32_t first, float* xs,
+                        float* ys) {
+  std::array<std::uint32_t, 8> shuffle, x, y;
+  seeds8(pixelSeed, first, shuffle.data(), x.data(), y.data());
+  block8(shuffle.data(), x.data(), y.data(), reversedIndex, xs, ys);
+}
+
 static_assert(SampleBlock::kDims == 8);
 #endif
 
@@ -211,10 +217,10 @@ void PixelSeeds::reset(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32
   }
 #endif
   for (std::uint32_t d = 0; d < n; ++d) {
-    const std::uint32_t dimSeed = hashCombine(pixelSeed_, d);
-    shuffle_[d] = hashCombine(dimSeed, kShuffleSalt);
-    xSeed_[d] = hashCombine(dimSeed, kXSalt);
-    ySeed_[d] = hashCombine(dimSeed, kYSalt);
+    const DimensionSeeds h = hashSeeds(pixelSeed_, d);
+    shuffle_[d] = h.shuffle;
+    xSeed_[d] = h.x;
+    ySeed_[d] = h.y;
   }
 }
 
@@ -224,25 +230,26 @@ Sampler::Sampler(std::uint64_t seed, std::uint64_t pixelIndex, std::uint32_t sam
 Sampler::Sampler(const PixelSeeds& seeds, std::uint32_t sampleIndex)
     : pixelSeed_(seeds.pixelSeed()), reversedIndex_(reverseBits(sampleIndex)), seeds_(&seeds) {}
 
-// Per dimension the sample index is shuffled by an Owen scramble (padding), then
-// the point of the shuffled index is Owen scrambled per coordinate (see above):
-// r is the shuffled index reversed, which is also the point's x before its scramble.
-Sampler::Seeds Sampler::seeds(std::uint32_t dimension) const {
+// From the pixel's table when it has the dimension.
+DimensionSeeds Sampler::seeds(std::uint32_t dimension) const {
   if (seeds_ && dimension < seeds_->dimensions())
     return {seeds_->shuffle_[dimension], seeds_->xSeed_[dimension], seeds_->ySeed_[dimension]};
-  const std::uint32_t dimSeed = hashCombine(pixelSeed_, dimension);
-  return {hashCombine(dimSeed, kShuffleSalt), hashCombine(dimSeed, kXSalt), hashCombine(dimSeed, kYSalt)};
+  return hashSeeds(pixelSeed_, dimension);
 }
 
+// Per dimension the sample index is shuffled by an Owen scramble (padding),
+// then the point of the shuffled index is Owen scrambled per coordinate (see
+// above): `index` is the shuffled index, which reversed is the point's x
+// before its scramble (van der Corput), so x's scramble is laineKarras(index).
 float Sampler::get1D(std::uint32_t dimension) const {
   // The x coordinate of get2D(dimension), without computing y.
-  const Seeds s = seeds(dimension);
-  const std::uint32_t r = laineKarras(reversedIndex_, s.shuffle);
-  return toUnitFloat(reverseBits(laineKarras(reverseBits(r), s.x)));
+  const DimensionSeeds s = seeds(dimension);
+  const std::uint32_t index = reverseBits(laineKarras(reversedIndex_, s.shuffle));
+  return toUnitFloat(reverseBits(laineKarras(index, s.x)));
 }
 
 Vec2f Sampler::get2D(std::uint32_t dimension) const {
-  const Seeds s = seeds(dimension);
+  const DimensionSeeds s = seeds(dimension);
   const std::uint32_t index = reverseBits(laineKarras(reversedIndex_, s.shuffle));
   const std::uint32_t x = reverseBits(laineKarras(index, s.x));
   const std::uint32_t y = reverseBits(laineKarras(sobol1Reversed(index), s.y));

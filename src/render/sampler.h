@@ -45,6 +45,11 @@ class SampleBlock {
 };
 static_assert(kDimensionsPerBounce <= SampleBlock::kDims && kDimFirstBounce <= SampleBlock::kDims);
 
+// One dimension's seeds for the index shuffle and the x and y scrambles.
+struct DimensionSeeds {
+  std::uint32_t shuffle, x, y;
+};
+
 // What every sample of one pixel shares: the scramble seeds of its first
 // dimensions, hashed once per pixel rather than once per sample and
 // dimension (the same values; a Sampler made with them gives the same bits).
@@ -81,10 +86,7 @@ class Sampler {
  private:
   // A dimension's seeds for the index shuffle and the x and y scrambles
   // (hashed here unless the pixel's table has them).
-  struct Seeds {
-    std::uint32_t shuffle, x, y;
-  };
-  Seeds seeds(std::uint32_t dimension) const;
+  DimensionSeeds seeds(std::uint32_t dimension) const;
 
   std::uint32_t pixelSeed_;
   std::uint32_t reversedIndex_;  // the sample index, bit reversed
