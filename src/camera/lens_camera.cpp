@@ -89,18 +89,24 @@ std::optional<LensRay> LensCamera::traceLens(const LensRay& in, double wavelengt
 
 std::optional<Ray> LensCamera::traceThrough(const Vec2f& raster, const Vec2d& pupilPoint,
                                             double wavelengthNm) const {
-  const Vec2d up = uprightSensorPointMm(film(), raster);
-  const Vec3d p{-up.x, -up.y, filmZ_};  // the inverted real image
+  const Vec3d p = filmPointMm(raster);
   const std::optional<CameraRay> r =
       cameraRay(traceLens({p, Vec3d{pupilPoint.x, pupilPoint.y, bounds_->planeZ()} - p}, wavelengthNm), 1.0);
   if (!r) return std::nullopt;
   return r->ray;
 }
 
+Vec3d LensCamera::filmPointMm(const Vec2f& raster) const {
+  const Vec2d up = uprightSensorPointMm(film(), raster);
+  return {-up.x, -up.y, filmZ_};  // the inverted real image
+}
+
 LensCamera::PupilRay LensCamera::pupilRay(const CameraSample& s) const {
-  const Vec2d up = uprightSensorPointMm(film(), s.film);
-  const Vec3d p{-up.x, -up.y, filmZ_};  // the inverted real image
-  const std::optional<PupilSample> ps = bounds_->sample({p.x, p.y}, {s.lens.x, s.lens.y});
+  const Vec3d p = filmPointMm(s.film);
+  return pupilRay(p, bounds_->sample({p.x, p.y}, {s.lens.x, s.lens.y}));
+}
+
+LensCamera::PupilRay LensCamera::pupilRay(const Vec3d& p, const std::optional<PupilSample>& ps) const {
   if (!ps) return {{p, Vec3d{}}, 0.0};
   return {{p, ps->point - p}, scale_ * irradianceIntegrand(p, ps->point) / ps->pdf};
 }
@@ -125,7 +131,8 @@ void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
   // In chunks on the stack: the bounds sample and the lens traces a chunk's
   // rays together.
   constexpr std::size_t kChunk = 4 * LensSystem::kTraceLanes;
-  std::array<Vec2d, kChunk> filmPoints, lensSamples;
+  std::array<Vec3d, kChunk> filmPoints;
+  std::array<Vec2d, kChunk> filmXY, lensSamples;
   std::array<PupilSample, kChunk> pupil;
   std::array<LensRay, kChunk> rays;
   std::array<double, kChunk> weights, wavelengths;
@@ -134,20 +141,18 @@ void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
     const std::size_t n = std::min(kChunk, samples.size() - first);
     for (std::size_t i = 0; i < n; ++i) {
       const CameraSample& s = samples[first + i];
-      const Vec2d up = uprightSensorPointMm(film(), s.film);
-      filmPoints[i] = {-up.x, -up.y};  // the inverted real image
+      filmPoints[i] = filmPointMm(s.film);
+      filmXY[i] = {filmPoints[i].x, filmPoints[i].y};
       lensSamples[i] = {s.lens.x, s.lens.y};
       wavelengths[i] = s.wavelengthNm;
     }
-    bounds_->sample(std::span(filmPoints).first(n), std::span(lensSamples).first(n),
-                    std::span(pupil).first(n));
+    bounds_->sample(std::span(filmXY).first(n), std::span(lensSamples).first(n), std::span(pupil).first(n));
     // pupilRay() on each sample, from its pupil sample (a pdf of 0: none).
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3d p{filmPoints[i].x, filmPoints[i].y, filmZ_};
-      const PupilSample& ps = pupil[i];
-      const bool none = ps.pdf == 0.0;
-      rays[i] = {p, none ? Vec3d{} : ps.point - p};  // a zero direction fails the trace: blocked
-      weights[i] = none ? 0.0 : scale_ * irradianceIntegrand(p, ps.point) / ps.pdf;
+      const PupilRay pr =
+          pupilRay(filmPoints[i], pupil[i].pdf == 0.0 ? std::nullopt : std::optional(pupil[i]));
+      rays[i] = pr.ray;  // a zero direction fails the trace: blocked
+      weights[i] = pr.weight;
     }
     if (dispersion_)
       lens_->traceFromFilm(std::span(rays).first(n), std::span(wavelengths).first(n),

@@ -74,6 +74,10 @@ class LensCamera final : public Camera {
     double weight = 0.0;  // the irradiance integrand over the pdf, times the exposure scale
   };
   PupilRay pupilRay(const CameraSample& sample) const;
+  // The same from the film point and its pupil sample (nullopt: none).
+  PupilRay pupilRay(const Vec3d& filmPoint, const std::optional<PupilSample>& pupil) const;
+  // A raster position's point on the film (lens space, mm): the inverted real image.
+  Vec3d filmPointMm(const Vec2f& raster) const;
   // The exact trace, then the polygonal aperture when blades are set and
   // the mask's transmittance at the stop when there is one.
   std::optional<LensRay> traceLens(const LensRay& in, double wavelengthNm) const;

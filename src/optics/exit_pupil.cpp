@@ -224,9 +224,12 @@ double filmRadius(Vec2d filmPoint) {
 }  // namespace
 
 int ExitPupilBounds::intervalOf(double filmRadius) const {
+  return intervalAt(filmRadius, filmRadius / maxFilmRadius_ * static_cast<int>(polygons_.size()));
+}
+
+int ExitPupilBounds::intervalAt(double filmRadius, double coordinate) const {
   if (!(filmRadius <= maxFilmRadius_ * (1.0 + 1e-9))) return -1;
-  const int n = static_cast<int>(polygons_.size());
-  return std::clamp(static_cast<int>(filmRadius / maxFilmRadius_ * n), 0, n - 1);
+  return std::clamp(static_cast<int>(coordinate), 0, static_cast<int>(polygons_.size()) - 1);
 }
 
 double ExitPupilBounds::area(double filmRadius) const {
@@ -321,7 +324,6 @@ void ExitPupilBounds::sample(std::span<const Vec2d> filmPoints, std::span<const 
     throw std::invalid_argument("ExitPupilBounds::sample: as many samples and outputs as film points");
   std::size_t first = 0;
   if (trace_lanes::available()) {
-    const double limit = maxFilmRadius_ * (1.0 + 1e-9);  // intervalOf()'s
     const int n = static_cast<int>(polygons_.size());
     FourSamples s;
     for (; first + 4 <= filmPoints.size(); first += 4) {
@@ -331,10 +333,8 @@ void ExitPupilBounds::sample(std::span<const Vec2d> filmPoints, std::span<const 
       // one computes on zeros and gets a pdf of 0.
       std::array<const Polygon*, 4> poly{};
       for (std::size_t l = 0; l < 4; ++l) {
-        if (s.r[l] <= limit) {
-          const Polygon& p = polygons_[std::clamp(static_cast<int>(s.f[l]), 0, n - 1)];
-          if (!(p.area <= 0.0)) poly[l] = &p;  // sample()'s test, NaN included
-        }
+        if (const int i = intervalAt(s.r[l], s.f[l]); i >= 0 && !(polygons_[i].area <= 0.0))
+          poly[l] = &polygons_[i];  // sample()'s test, NaN included
         s.uy[l] = u[first + l].y;
         if (!poly[l]) {
           s.target[l] = s.lo[l] = s.ax[l] = s.ay[l] = s.bx[l] = s.by[l] = s.cx[l] = s.cy[l] = 0.0;

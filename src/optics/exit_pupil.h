@@ -74,6 +74,9 @@ class ExitPupilBounds {
     double bucketScale = 0.0;  // buckets per unit of target
   };
   int intervalOf(double filmRadius) const;
+  // intervalOf for a radius whose interval coordinate filmRadius /
+  // maxFilmRadius * intervals is already computed (the batched sample()).
+  int intervalAt(double filmRadius, double coordinate) const;
   // The fan triangle (index into triangles) that u.x * area selects.
   static std::size_t triangleOf(const Polygon& poly, double target);
 
