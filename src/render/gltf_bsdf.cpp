@@ -66,34 +66,20 @@ GltfBsdf::Choice GltfBsdf::computeChoice(const Vec3f& woLocal, const Vec3f& woCo
   return c;
 }
 
+// eval and pdf are the two halves of evalPdf (the renderer wants both at once).
 Rgb GltfBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
-  const Vec3f woL = local(wo), wiL = shading_.toLocal(wi);
-  Rgb f = base_.eval(woL, wiL);
-  if (transmission_ > 0) f += dielectric_->eval(woL, wiL) * transmission_;
-  if (sheenMax_ > 0) f = sheen_->eval(woL, wiL) + f * sheenScale(woL, wiL);
-  if (clearcoat_ > 0) {
-    const Vec3f woC = coatLocal(wo), wiC = coat_.toLocal(wi);
-    f = coatLobe_->eval(woC, wiC) * clearcoat_ + f * coatScale(woC, wiC);
-  }
-  return f;
+  return evalPdf(wo, wi).f;
 }
 
 float GltfBsdf::pdf(const Vec3f& wo, const Vec3f& wi) const {
-  const Choice c = choose(wo);
-  const Vec3f woL = local(wo), wiL = shading_.toLocal(wi);
-  float p = 0;
-  if (c.base > 0) p += c.base * base_.pdf(woL, wiL);
-  if (c.trans > 0) p += c.trans * dielectric_->pdf(woL, wiL);
-  if (c.sheen > 0) p += c.sheen * sheen_->pdf(woL, wiL);
-  if (c.coat > 0) p += c.coat * coatLobe_->pdf(coatLocal(wo), coat_.toLocal(wi));
-  return p;
+  return evalPdf(wo, wi).pdf;
 }
 
 BsdfValue GltfBsdf::evalPdf(const Vec3f& wo, const Vec3f& wi) const {
   const Choice c = choose(wo);
   const Vec3f woL = local(wo), wiL = shading_.toLocal(wi);
   const BsdfValue b = base_.evalPdf(woL, wiL);
-  // eval's and pdf's sums, term by term in their order.
+  // The layers' values and the lobes' densities weighted by their choice.
   Rgb f = b.f;
   float p = 0;
   if (c.base > 0) p += c.base * b.pdf;

@@ -48,8 +48,8 @@ class GltfBsdf {
 
   Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
-  // Both at once (the same bits as each alone): the next-event estimate
-  // needs both, and the base lobe shares its half vector between them.
+  // Both at once (what eval and pdf give): the next-event estimate needs
+  // both, and the base lobe shares its half vector between them.
   BsdfValue evalPdf(const Vec3f& wo, const Vec3f& wi) const;
   // wi of the sample is in world space. Empty when the sample has no density.
   std::optional<BsdfSample> sample(const Vec3f& wo, float uLobe, const Vec2f& u) const;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <random>
 #include <vector>
@@ -119,6 +120,33 @@ TEST(Bsdf, SampleReportsTheValuesOfEvalAndPdf) {
       if (!s) continue;
       EXPECT_NEAR(s->pdf, b.pdf(wo, s->wi), 1e-4f * s->pdf);
       EXPECT_NEAR(s->f.y, b.eval(wo, s->wi).y, 1e-4f * s->f.y);
+    }
+  }
+}
+
+// evalPdf shares the half vector and D between the value and the density:
+// the same bits as eval and pdf, smooth to rough, metal to dielectric, with
+// and without the prepared view, directions on both sides.
+TEST(Bsdf, EvalPdfIsEvalAndPdfBitForBit) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(0, 1);
+  const auto direction = [&] {
+    const float z = 2 * u(rng) - 1, phi = 2 * float(kPi) * u(rng), r = std::sqrt(std::max(0.0f, 1 - z * z));
+    return Vec3f{r * std::cos(phi), r * std::sin(phi), z};
+  };
+  for (int k = 0; k < 4000; ++k) {
+    BsdfParams p;
+    p.baseColor = {u(rng), u(rng), u(rng)};
+    p.metallic = k % 5 == 0 ? 1.0f : u(rng);
+    p.roughness = k % 7 == 0 ? 0.0f : u(rng);
+    p.specularWeight = k % 3 == 0 ? 0.0f : u(rng);
+    const Vec3f wo = direction(), wi = k % 11 == 0 ? Vec3f{-wo.x, -wo.y, wo.z} : direction();
+    for (const Bsdf& b : {Bsdf(p), Bsdf(p, wo.z)}) {
+      const BsdfValue v = b.evalPdf(wo, wi);
+      const Rgb f = b.eval(wo, wi);
+      const float pdf = b.pdf(wo, wi);
+      ASSERT_EQ(std::memcmp(&v.f, &f, sizeof f), 0) << k;
+      ASSERT_EQ(std::memcmp(&v.pdf, &pdf, sizeof pdf), 0) << k;
     }
   }
 }
