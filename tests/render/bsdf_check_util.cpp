@@ -13,6 +13,11 @@ Vec3f sphericalDir(double theta, double phi) {
           float(std::cos(theta))};
 }
 
+Vec3f uniformSphereDir(float u1, float u2) {
+  const float z = 2 * u1 - 1, phi = 2 * float(kPi) * u2, r = std::sqrt(std::max(0.0f, 1 - z * z));
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
 double integrateSphere(const std::function<double(const Vec3f&)>& g, double theta0, double theta1,
                        double phi0, double phi1, int n) {
   const double ht = (theta1 - theta0) / n, hp = (phi1 - phi0) / n;

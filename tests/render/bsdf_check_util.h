@@ -11,6 +11,9 @@
 namespace lensrt::test {
 
 Vec3f sphericalDir(double theta, double phi);
+// A direction uniform on the sphere for u1, u2 uniform in [0, 1): z = 2 u1 - 1,
+// azimuth 2 pi u2 (float arithmetic).
+Vec3f uniformSphereDir(float u1, float u2);
 
 // Composite Simpson over a (theta, phi) region of g(w) sin(theta), n even.
 double integrateSphere(const std::function<double(const Vec3f&)>& g, double theta0, double theta1,

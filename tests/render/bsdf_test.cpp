@@ -131,8 +131,8 @@ TEST(Bsdf, EvalPdfIsEvalAndPdfBitForBit) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> u(0, 1);
   const auto direction = [&] {
-    const float z = 2 * u(rng) - 1, phi = 2 * float(kPi) * u(rng), r = std::sqrt(std::max(0.0f, 1 - z * z));
-    return Vec3f{r * std::cos(phi), r * std::sin(phi), z};
+    const float u1 = u(rng);
+    return test::uniformSphereDir(u1, u(rng));
   };
   for (int k = 0; k < 4000; ++k) {
     BsdfParams p;

@@ -207,8 +207,8 @@ TEST(GltfBsdf, PreparedForAViewGivesTheSameBits) {
   std::mt19937 rng(21);
   std::uniform_real_distribution<float> u(0, 1);
   const auto direction = [&] {
-    const float z = 2 * u(rng) - 1, phi = 2 * float(kPi) * u(rng), r = std::sqrt(std::max(0.0f, 1 - z * z));
-    return Vec3f{r * std::cos(phi), r * std::sin(phi), z};
+    const float u1 = u(rng);
+    return test::uniformSphereDir(u1, u(rng));
   };
   const auto same = [](const Rgb& a, const Rgb& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   int samples = 0;
