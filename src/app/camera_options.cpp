@@ -217,9 +217,11 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& glt
                         gltf.name, glTFAspect, aspect, 2.0 * gltf.ymag * aspect));
       return std::make_unique<OrthographicCamera>(gltf.worldFromCamera, film, gltf.ymag);
     }
-    warnings.warn("camera '" + gltf.name + "' is orthographic; --camera " + o.model +
-                  (o.model == "pinhole" ? " with a lens, a focal length or an irradiance film" : "") +
-                  " renders it in perspective");
+    // One text whatever the model: `lensrt compare` makes four cameras and
+    // warns once (Warnings drops repeats).
+    warnings.warn("camera '" + gltf.name +
+                  "' is orthographic; a lens model (thin, thick, lens), --lens, --focal-length or an "
+                  "irradiance film renders it in perspective");
   }
 
   // Radiance film is the ideal pinhole's: a lens forms an image on a film, and

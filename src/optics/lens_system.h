@@ -54,8 +54,6 @@ class LensSystem {
   // returns non-finite values. `path`, when given, receives every surface hit.
   std::optional<LensRay> traceFromFilm(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
                                        std::vector<Vec3d>* path = nullptr) const;
-  // A ray from the scene toward the lens (direction.z > 0); returns the ray
-  // leaving the rear surface toward the film.
   // Many rays from the film at the d line: the same as traceFromFilm on each,
   // bit for bit, but several at a time (kTraceLanes), whose independent
   // square-root chains the CPU overlaps: about twice the throughput.
@@ -66,6 +64,8 @@ class LensSystem {
                      std::span<std::optional<LensRay>> out) const;
   static constexpr std::size_t kTraceLanes = trace_lanes::kLanes;
 
+  // A ray from the scene toward the lens (direction.z > 0); returns the ray
+  // leaving the rear surface toward the film.
   std::optional<LensRay> traceFromScene(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
                                         std::vector<Vec3d>* path = nullptr) const;
 
