@@ -19,6 +19,9 @@ namespace {
 
 // Exit statuses, as idiff's.
 constexpr int kExitPass = 0, kExitWarn = 1, kExitFail = 2, kExitIncomparable = 3, kExitUnreadable = 4;
+// The verdict is the exit status.
+static_assert(int(DiffVerdict::Pass) == kExitPass && int(DiffVerdict::Warn) == kExitWarn &&
+              int(DiffVerdict::Fail) == kExitFail);
 
 struct DiffOptions {
   std::string fileA, fileB;

@@ -83,7 +83,7 @@ NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAware
   r.degreesOfFreedom = minSamples > 1 ? double(minSamples - 1) : 0.0;
   const double channelAlpha = -std::expm1(std::log1p(-o.pixelFalseAlarmRate) / 3.0);  // Sidak
   r.criticalValue = twoSidedCriticalValue(channelAlpha, r.degreesOfFreedom);
-  r.maxChannel = kColour[0];
+  r.maxChannel = std::string(kColour[0]);  // not assign(const char*): GCC 12's false -Wrestrict (bug 105329)
   std::array<double, 3> fluxDifference{}, fluxVariance{}, fluxTotal{};
 
   for (int y = 0; y < a.height; ++y)

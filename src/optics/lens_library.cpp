@@ -66,10 +66,12 @@ std::filesystem::path findLens(const std::string& nameOrPath, const std::filesys
       if (std::filesystem::is_regular_file(candidate, ec)) return candidate;
     }
   }
+  // Appended piece by piece: GCC 12 warns falsely about "..." + std::string (bug 105329).
   std::string names;
-  for (const auto& p : listLenses(lensDir)) names += (names.empty() ? "" : ", ") + p.stem().string();
-  throw InputError(nameOrPath, "no such lens file or library lens" +
-                                   (names.empty() ? std::string() : " (library: " + names + ")"));
+  for (const auto& p : listLenses(lensDir)) names.append(names.empty() ? "" : ", ").append(p.stem().string());
+  std::string message = "no such lens file or library lens";
+  if (!names.empty()) message.append(" (library: ").append(names).append(")");
+  throw InputError(nameOrPath, message);
 }
 
 }  // namespace lensrt

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -70,11 +71,18 @@ void readAsphericTokens(std::vector<std::string_view>& tokens, Surface& s, const
     const std::size_t eq = token.find('=');
     const std::string key = lower(token.substr(0, eq));
     int slot = -1;  // 0: k, 1 + j: A_{2j+4}
-    if (key == "k")
+    if (key == "k") {
       slot = 0;
-    else
-      for (int j = 0; j < kAsphericTerms; ++j)
-        if (key == "a" + std::to_string(4 + 2 * j)) slot = 1 + j;
+    } else if (key.size() > 1 && key[0] == 'a' && key[1] != '0') {
+      // A4, A6, ... A16 (parsed rather than compared with "a" + to_string,
+      // which sets off GCC 12's false -Wrestrict alarm, bug 105329).
+      int order = 0;
+      const char* end = key.data() + key.size();
+      const auto [last, ec] = std::from_chars(key.data() + 1, end, order);
+      if (ec == std::errc() && last == end && order >= 4 && order % 2 == 0 &&
+          (order - 4) / 2 < kAsphericTerms)
+        slot = 1 + (order - 4) / 2;
+    }
     if (slot < 0)
       throw InputError(file,
                        "unknown aspheric term '" + std::string(token.substr(0, eq)) +

@@ -16,8 +16,12 @@ constexpr double kElevationDegrees = 15.0;
 std::string available(const SceneDesc& desc) {
   if (desc.cameras.empty()) return "the scene has no cameras";
   std::string s = "cameras:";
-  for (const CameraDesc& c : desc.cameras)
-    s += " " + std::to_string(c.node) + (c.name.empty() ? "" : " '" + c.name + "'") + ",";
+  // Appended piece by piece: GCC 12 warns falsely about "..." + std::string (bug 105329).
+  for (const CameraDesc& c : desc.cameras) {
+    s.append(" ").append(std::to_string(c.node));
+    if (!c.name.empty()) s.append(" '").append(c.name).append("'");
+    s.append(",");
+  }
   s.pop_back();
   return s;
 }

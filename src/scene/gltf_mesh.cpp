@@ -110,7 +110,8 @@ std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& m
   if (index < 0 || static_cast<std::size_t>(index) >= ctx.model.meshes.size())
     ctx.fail("mesh " + std::to_string(index) + " does not exist");
   const tinygltf::Mesh& gm = ctx.model.meshes[static_cast<std::size_t>(index)];
-  const std::string baseName = gm.name.empty() ? "#" + std::to_string(index) : gm.name;
+  // (Not "#" + std::to_string: GCC 12 warns falsely about it, bug 105329.)
+  const std::string baseName = gm.name.empty() ? std::string("#").append(std::to_string(index)) : gm.name;
   if (!gm.weights.empty()) ctx.warnings.warn("morph targets are not supported: meshes render without them");
   std::vector<int> result;
   for (std::size_t p = 0; p < gm.primitives.size(); ++p) {

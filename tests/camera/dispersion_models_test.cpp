@@ -99,7 +99,9 @@ TEST(DispersionModels, ThickLensFocusesEachWavelengthWhereTheLensEquationSays) {
     // The conjugate plane lies u in front of H; camera space starts at the entrance pupil.
     const double zMm = p.frontPrincipalZ - p.entrancePupilZ - u;
     EXPECT_NEAR(crossing(r->ray).z, zMm * 1e-3, 2e-4 * std::abs(zMm) * 1e-3) << wl;
-    if (wl == kWavelengthDNm) EXPECT_NEAR(crossing(r->ray).z, -2.0, 1e-3);
+    if (wl == kWavelengthDNm) {
+      EXPECT_NEAR(crossing(r->ray).z, -2.0, 1e-3);
+    }
   }
 }
 

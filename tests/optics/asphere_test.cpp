@@ -255,6 +255,13 @@ TEST(Asphere, ReadersCarryConicAndCoefficients) {
     }
   };
   rejects("50 5 1.5 60 20 A5=1\n", "unknown aspheric term 'A5'");
+  for (const char* name : {"A2", "A18", "A04", "A", "A4x", "A-4", "A99999999999"})
+    rejects("50 5 1.5 60 20 " + std::string(name) + "=1\n",
+            "unknown aspheric term '" + std::string(name) + "'");
+  // Every even order from 4 to 16, in either case, lands in its own slot.
+  const LensPrescription all =
+      parseTableLens("50 5 1.5 60 20 a4=1 A6=2 a8=3 A10=4 a12=5 A14=6 A16=7\n", "x.lens");
+  for (int j = 0; j < 7; ++j) EXPECT_DOUBLE_EQ(all.surfaces[0].aspheric[j], j + 1.0) << j;
   rejects("50 5 1.5 60 20 k=1 k=2\n", "given twice");
   rejects("50 5 1.5 60 20 k=x\n", "expected a number for aspheric term k");
   rejects("50 5 k=1 1.5 60 20\n", "must come after");

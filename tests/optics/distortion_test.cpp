@@ -15,11 +15,11 @@ namespace {
 LensSystem symmetricLens() {
   LensPrescription rx;
   rx.name = "symmetric";
-  Surface s1{40.0, 6.0, 30.0, {1.6, 50.0, ""}};
+  Surface s1{40.0, 6.0, 30.0, {1.6, 50.0, "", std::nullopt}};
   Surface s2{200.0, 6.0, 30.0, {}};
   Surface stop{0.0, 6.0, 12.0, {}};
   stop.isStop = true;
-  Surface s3{-200.0, 6.0, 30.0, {1.6, 50.0, ""}};
+  Surface s3{-200.0, 6.0, 30.0, {1.6, 50.0, "", std::nullopt}};
   Surface s4{-40.0, 0.0, 30.0, {}};
   rx.surfaces = {s1, s2, stop, s3, s4};
   return LensSystem(rx);
