@@ -14,6 +14,12 @@ Vec3f sphericalDir(double theta, double phi);
 // A direction uniform on the sphere for u1, u2 uniform in [0, 1): z = 2 u1 - 1,
 // azimuth 2 pi u2 (float arithmetic).
 Vec3f uniformSphereDir(float u1, float u2);
+// uniformSphereDir of two uniform draws from rng, u1 first.
+inline Vec3f randomSphereDir(std::mt19937& rng) {
+  std::uniform_real_distribution<float> u(0, 1);
+  const float u1 = u(rng);
+  return uniformSphereDir(u1, u(rng));
+}
 
 // Composite Simpson over a (theta, phi) region of g(w) sin(theta), n even.
 double integrateSphere(const std::function<double(const Vec3f&)>& g, double theta0, double theta1,

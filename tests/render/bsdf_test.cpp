@@ -130,10 +130,7 @@ TEST(Bsdf, SampleReportsTheValuesOfEvalAndPdf) {
 TEST(Bsdf, EvalPdfIsEvalAndPdfBitForBit) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> u(0, 1);
-  const auto direction = [&] {
-    const float u1 = u(rng);
-    return test::uniformSphereDir(u1, u(rng));
-  };
+  const auto direction = [&] { return test::randomSphereDir(rng); };
   for (int k = 0; k < 4000; ++k) {
     BsdfParams p;
     p.baseColor = {u(rng), u(rng), u(rng)};
