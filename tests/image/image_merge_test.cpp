@@ -24,7 +24,9 @@ Image part(int x0, int x1, int y0, int y1, std::vector<std::string> channels = {
 
 std::string mergeError(const std::vector<Image>& parts) {
   std::vector<std::string> names;
-  for (std::size_t i = 0; i < parts.size(); ++i) names.push_back("p" + std::to_string(i) + ".exr");
+  // Appended, not "p" + std::to_string(i): GCC 12's false -Wstringop-overflow (bug 105329).
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    names.push_back(std::string("p").append(std::to_string(i)).append(".exr"));
   try {
     mergeImageParts(parts, names);
   } catch (const std::invalid_argument& e) {

@@ -117,12 +117,13 @@ std::vector<std::uint8_t> GltfBuilder::glb() const {
   if (!bin.empty()) d["buffers"] = {{{"byteLength", bin.size()}}};
   std::string text = d.dump();
   while (text.size() % 4) text += ' ';
-  std::vector<std::uint8_t> out;
+  // The magic as the initial contents: inserting it into the empty vector set
+  // off GCC 12's false -Wstringop-overflow.
+  std::vector<std::uint8_t> out{'g', 'l', 'T', 'F'};
   const auto u32le = [&](std::uint32_t v) {
     for (int s = 0; s < 32; s += 8) out.push_back(static_cast<std::uint8_t>(v >> s));
   };
   const std::size_t total = 12 + 8 + text.size() + (body.empty() ? 0 : 8 + body.size());
-  out.insert(out.end(), {'g', 'l', 'T', 'F'});
   u32le(2);
   u32le(static_cast<std::uint32_t>(total));
   u32le(static_cast<std::uint32_t>(text.size()));
