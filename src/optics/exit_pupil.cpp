@@ -18,6 +18,12 @@ double cross2(const Vec2d& o, const Vec2d& a, const Vec2d& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
+// The fan triangle whose cumulative area first exceeds `target`, else the
+// last: the search the bucket table stands in for.
+std::size_t searchFanTriangle(const std::vector<double>& cdf, double target) {
+  return static_cast<std::size_t>(std::upper_bound(cdf.begin() + 1, cdf.end() - 1, target) - cdf.begin() - 1);
+}
+
 // Andrew's monotone chain; counter-clockwise, no collinear points.
 std::vector<Vec2d> convexHull(std::vector<Vec2d> pts) {
   std::sort(pts.begin(), pts.end(),
@@ -209,8 +215,7 @@ ExitPupilBounds::ExitPupilBounds(const LensSystem& lens, double filmZ, double ma
     poly.bucketScale = static_cast<double>(buckets) / poly.area;
     for (std::size_t b = 0; b < buckets; ++b) {
       const double target = static_cast<double>(b) / poly.bucketScale;
-      const auto it = std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target);
-      poly.firstTriangle.push_back(static_cast<std::uint16_t>(it - poly.cdf.begin() - 1));
+      poly.firstTriangle.push_back(static_cast<std::uint16_t>(searchFanTriangle(poly.cdf, target)));
     }
   }
 }
@@ -239,8 +244,7 @@ double ExitPupilBounds::area(double filmRadius) const {
 
 std::size_t ExitPupilBounds::triangleOf(const Polygon& poly, double target) {
   if (poly.firstTriangle.empty()) [[unlikely]]
-    return static_cast<std::size_t>(std::upper_bound(poly.cdf.begin() + 1, poly.cdf.end() - 1, target) -
-                                    poly.cdf.begin() - 1);
+    return searchFanTriangle(poly.cdf, target);
   const double bucket = target * poly.bucketScale;
   const std::size_t lastBucket = poly.firstTriangle.size() - 1;
   std::size_t k =
