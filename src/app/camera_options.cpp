@@ -280,12 +280,10 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   const double yfovInfinity =
       paraxial || o.focalLengthMm ? 2.0 * std::atan(0.5 * film.sensorHeightMm / focalMm) : yfovGltf;
 
-  // The closest focus: a thin lens needs the object beyond its focal length;
-  // a lens (and the thick model of it) beyond its front focal point and its
-  // front surface, measured from the entrance pupil.
-  const double closestMm = o.model == "thin" ? focalMm
-                           : lens            ? closestFocusDistanceMm(LensSystem(*lens))
-                                             : focalMm;
+  // The closest focus: the lens's own (its file's, else magnification 1:1),
+  // the same for all four models derived from it so that they stay
+  // comparable; an ideal thin lens without one stops at 1:1 too (2f).
+  const double closestMm = lens ? closestFocusDistanceMm(LensSystem(*lens)) : 2.0 * focalMm;
   const std::string optic = o.model == "thin" ? fmt::format("the thin lens (f = {:.4g} mm)", focalMm)
                             : lens            ? lens->name
                                               : "the lens";
@@ -320,18 +318,19 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
       focus = kInfinity;
     }
     // Too close for the optics: focus as close as they can.
-    const double closestM = 1.001 * closestMm / 1000.0;
+    const double closestM = closestMm / 1000.0;
     if (*focus < closestM) {
       warnings.warn(
-          fmt::format("--focus auto: the surface at {:.4g} m is closer than the lens focuses; using {:.4g} m",
-                      *focus, closestM));
+          fmt::format("--focus auto: the surface at {:.4g} m is closer than {} focuses; focusing at its "
+                      "closest, {:.4g} m",
+                      *focus, lens ? lens->name : optic, closestM));
       focus = closestM;
     }
   }
   const double focusM = focus.value_or(kInfinity);
-  if (needsFocus && !std::isinf(focusM) && focusM * 1000.0 <= closestMm)
+  if (needsFocus && !std::isinf(focusM) && focusM * 1000.0 < closestMm * (1 - 1e-12))
     throw CLI::ValidationError(
-        "--focus", fmt::format("{} cannot focus at {:g} m (it needs more than {:.4g} m)", optic, focusM,
+        "--focus", fmt::format("{} cannot focus at {:g} m (its closest focus is {:.4g} m)", optic, focusM,
                                closestMm / 1000.0));
 
   // What the camera models still reject is about the lens (makeCamera names

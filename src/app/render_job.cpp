@@ -12,8 +12,10 @@
 #include "app/cluster.h"
 #include "app/distributed_render.h"
 #include "app/scene_digest.h"
+#include "core/constants.h"
 #include "core/error.h"
 #include "image/image_io.h"
+#include "render/light_level.h"
 #include "render/progress.h"
 #include "render/render_identity.h"
 #include "scene/camera_selection.h"
@@ -33,6 +35,27 @@ auto asFlagError(const char* flag, F&& f) {
   } catch (const SelectionError& e) {
     throw CLI::ValidationError(flag, e.file() + ": " + e.message());
   }
+}
+// A 32x18 grid of rays over the glTF camera's view (parallel ones for an
+// orthographic camera): where the weak-light test looks.
+std::vector<Ray> probeRays(const CameraDesc& camera, float aspect) {
+  constexpr int kColumns = 32, kRows = 18;
+  std::vector<Ray> rays;
+  const float tanY = std::tan(0.5f * camera.yfov);
+  for (int j = 0; j < kRows; ++j)
+    for (int i = 0; i < kColumns; ++i) {
+      const float x = 2 * (i + 0.5f) / kColumns - 1, y = 1 - 2 * (j + 0.5f) / kRows;
+      Ray r;
+      if (camera.orthographic) {
+        r.origin = camera.worldFromCamera.point(Vec3f{x * camera.ymag * aspect, y * camera.ymag, 0});
+        r.direction = normalize(camera.worldFromCamera.vector(Vec3f{0, 0, -1}));
+      } else {
+        r.origin = camera.worldFromCamera.point(Vec3f{0, 0, 0});
+        r.direction = normalize(camera.worldFromCamera.vector(Vec3f{x * tanY * aspect, y * tanY, -1}));
+      }
+      rays.push_back(r);
+    }
+  return rays;
 }
 }  // namespace
 
@@ -84,23 +107,38 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
   materials_ = std::make_unique<MaterialTable>(scene_->desc());
   lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
   // Most glTF files leave the lighting to the viewer, which shows them under
-  // a default environment; so does lensrt, rather than render black.
-  const bool environmentGiven = options.environment.constant || !options.environment.file.empty();
-  if (lights_->empty() && !environmentGiven) {
-    *environment_ = defaultEnvironment(options.environment);
-    lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
-    defaultEnvironment_ = true;
-    if (!lights_->empty() && !options.quiet)
-      warnings.warn(
-          fmt::format("the scene has no light source: lighting it with the default environment, a uniform "
-                      "sky of radiance "
-                      "{:g} (--env chooses another)",
-                      kDefaultSkyRadiance * options.environment.intensity));
+  // a default environment; so does lensrt, rather than render black. A scene
+  // whose own emitters are token ones (a few glowing parts) gets the sky too.
+  const bool environmentGiven =
+      options.environment.none || options.environment.constant || !options.environment.file.empty();
+  if (!environmentGiven) {
+    std::string why;
+    if (lights_->empty()) {
+      why = "the scene has no light source";
+    } else {
+      const std::vector<Ray> probes = probeRays(gltfCamera_, float(width_) / float(height_));
+      const double skyIrradiance = kPi * kDefaultSkyRadiance;
+      const std::optional<double> level = medianEmitterIrradiance(*scene_, *materials_, probes);
+      const bool punctual = std::any_of(scene_->desc().lights.begin(), scene_->desc().lights.end(),
+                                        [](const PunctualLight& l) { return luminance(l.intensity) > 0; });
+      const double fraction = punctual ? kWeakLightFraction : kWeakGlowFraction;
+      if (level && *level < fraction * skyIrradiance)
+        why = fmt::format(
+            "the scene's own light is too weak to light it (what the camera sees gets {:.3g} W/m^2 from its "
+            "{}, under {:g}% of the default sky's {:.4g}; --env none keeps its light alone)",
+            *level, punctual ? "lights" : "emissive surfaces", 100 * fraction, skyIrradiance);
+    }
+    if (!why.empty()) {
+      *environment_ = defaultEnvironment(options.environment);
+      lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+      defaultEnvironment_ = true;
+      if (!lights_->empty() && !options.quiet)
+        warnings.warn(fmt::format(
+            "{}: lighting it with the default environment, a uniform sky of radiance {:g} (--env chooses "
+            "another)",
+            why, kDefaultSkyRadiance * options.environment.intensity));
+    }
   }
-  if (lights_->empty() && !options.quiet)
-    warnings.warn(
-        "the scene has no lights, emissive surfaces or environment: the image will be black "
-        "(try --env constant:1)");
   IntegratorSettings integratorSettings;
   integratorSettings.maxDepth = options.maxDepth;
   integrator_ =

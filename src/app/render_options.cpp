@@ -68,6 +68,10 @@ std::string checkEnvironment(const std::string& text) {
 
 EnvironmentSpec parseEnvironment(const std::string& text) {
   EnvironmentSpec spec;
+  if (text == "none") {
+    spec.none = true;
+    return spec;
+  }
   constexpr std::string_view kConstant = "constant:";
   if (text.rfind(kConstant, 0) == 0) {
     std::vector<float> values;
@@ -95,7 +99,7 @@ EnvironmentSpec parseEnvironment(const std::string& text) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (ext != ".exr" && ext != ".hdr")
     throw CLI::ValidationError(
-        "--env: expected constant:V, constant:R,G,B or a lat-long .exr/.hdr file, got '" + text + "'");
+        "--env: expected none, constant:V, constant:R,G,B or a lat-long .exr/.hdr file, got '" + text + "'");
   spec.file = text;
   return spec;
 }
@@ -103,9 +107,10 @@ EnvironmentSpec parseEnvironment(const std::string& text) {
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentArgs& args) {
   cmd.add_option(
          "--env", args.environment,
-         "environment light: constant:V or constant:R,G,B radiance in W/(sr m^2), or a lat-long "
-         ".exr/.hdr map (centre = -Z, +Y up), e.g. --env constant:1 (default: none when the scene has "
-         "a light or an emissive surface, else a uniform sky of radiance 1, with a notice)")
+         "environment light: constant:V or constant:R,G,B radiance in W/(sr m^2), a lat-long "
+         ".exr/.hdr map (centre = -Z, +Y up), or none (the scene's own light alone), e.g. --env constant:1 "
+         "(default: none when the scene's lights and emissive surfaces light it, else a uniform sky of "
+         "radiance 1, with a notice saying why)")
       ->check([](const std::string& s) { return checkEnvironment(s); });
   cmd.add_option("--env-rotate", args.rotationDegrees,
                  "turn the environment about +Y by DEG degrees, counterclockwise seen from above (right-hand "

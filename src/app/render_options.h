@@ -24,6 +24,7 @@ Resolution parseResolution(const std::string& text);
 // --env (neither constant nor file: the default, see RenderJob), --env-rotate
 // and --env-intensity.
 struct EnvironmentSpec {
+  bool none = false;            // --env none: the scene's own light alone, never the default sky
   std::optional<Rgb> constant;  // constant:V or constant:R,G,B
   std::string file;             // a lat-long .exr or .hdr
   double rotationDegrees = 0;   // about +Y, right-hand rule: +90 puts the map's centre at -X

@@ -42,9 +42,21 @@ double axisCrossing(const LensSystem& lens, double objectZ, double h) {
 
 }  // namespace
 
-double closestFocusDistanceMm(const LensSystem& lens) {
+double nearestRealImageDistanceMm(const LensSystem& lens) {
   const ParaxialData& p = lens.paraxial();
   return std::max(p.entrancePupilZ - p.frontFocalZ, p.entrancePupilZ - frontmostZ(lens));
+}
+
+double closestFocusDistanceMm(const LensSystem& lens) {
+  const ParaxialData& p = lens.paraxial();
+  // Nearer than a real lens focuses, the film extension runs away toward
+  // infinity and the pictures degenerate: the design's own limit applies, or
+  // else magnification 1:1 (the object 2f in front of the front principal
+  // plane), where a macro lens stops.
+  const double stated = lens.prescription().closestFocusMm > 0
+                            ? lens.prescription().closestFocusMm
+                            : p.entrancePupilZ - (p.frontPrincipalZ - 2.0 * p.efl);
+  return std::max(nearestRealImageDistanceMm(lens), stated);
 }
 
 double focusFilmDistance(const LensSystem& lens, double objectDistanceMm) {
@@ -60,7 +72,7 @@ double focusFilmDistance(const LensSystem& lens, double objectDistanceMm) {
   } catch (const std::domain_error&) {
     throw InputError(name, "cannot focus at " + metres(objectDistanceMm) +
                                " from the entrance pupil: closer than the lens can focus (needs more than " +
-                               metres(closestFocusDistanceMm(lens)) + ")");
+                               metres(nearestRealImageDistanceMm(lens)) + ")");
   }
   // Refine on real rays: the axis crossing z(h) = z0 + a h^2 + O(h^4);
   // Richardson extrapolation of two small heights gives the paraxial z0 of

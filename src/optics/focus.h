@@ -13,7 +13,13 @@ namespace lensrt {
 // (at or inside its front focal point, or inside the lens).
 double focusFilmDistance(const LensSystem& lens, double objectDistanceMm);
 
-// The closest object distance (from the entrance pupil, mm) with a real image.
+// The closest object distance (from the entrance pupil, mm) with a real image:
+// beyond the front focal point and outside the glass.
+double nearestRealImageDistanceMm(const LensSystem& lens);
+
+// The lens's closest focus (from the entrance pupil, mm), which the cameras
+// keep to: the prescription's closestFocusMm when its file gives one, else
+// magnification 1:1; never nearer than nearestRealImageDistanceMm.
 double closestFocusDistanceMm(const LensSystem& lens);
 
 // The prescription with its stop scaled so the paraxial f-number is `fNumber`.

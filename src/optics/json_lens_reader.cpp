@@ -63,9 +63,10 @@ LensPrescription parseJsonLens(std::string_view text, const std::string& file) {
     throw InputError(file, "invalid JSON: " + what);
   }
   if (!doc.is_object()) throw InputError(file, "a lens file must hold a JSON object");
-  rejectUnknownKeys(
-      doc, {"format", "version", "name", "description", "source", "focal_length_mm", "surfaces", "notes"}, "",
-      file);
+  rejectUnknownKeys(doc,
+                    {"format", "version", "name", "description", "source", "focal_length_mm",
+                     "closest_focus_m", "surfaces", "notes"},
+                    "", file);
   if (getString(doc, "format", file) != "lensrt-lens")
     throw InputError(file, "\"format\" must be \"lensrt-lens\"");
   if (getNumber(doc, "version", "", file, 1.0) != 1.0) throw InputError(file, "only \"version\": 1 is known");
@@ -74,6 +75,11 @@ LensPrescription parseJsonLens(std::string_view text, const std::string& file) {
   lens.description = getString(doc, "description", file);
   lens.source = getString(doc, "source", file);
   lens.nominalFocalLengthMm = getNumber(doc, "focal_length_mm", "", file, 0.0);
+  const double closestFocusM = getNumber(doc, "closest_focus_m", "", file, 0.0);
+  if (!(closestFocusM >= 0.0 && closestFocusM <= kMaxLengthMm / 1000.0))
+    throw InputError(file, "\"closest_focus_m\" must be a distance from 0 to " +
+                               std::to_string(int(kMaxLengthMm / 1000.0)) + " m");
+  lens.closestFocusMm = 1000.0 * closestFocusM;
   const auto surfaces = doc.find("surfaces");
   if (surfaces == doc.end() || !surfaces->is_array()) throw InputError(file, "\"surfaces\" must be an array");
   if (surfaces->size() > static_cast<std::size_t>(kMaxSurfaces))

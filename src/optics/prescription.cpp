@@ -41,6 +41,7 @@ LensPrescription LensPrescription::scaled(double factor) const {
     }
   }
   out.nominalFocalLengthMm *= factor;
+  out.closestFocusMm *= factor;
   return out;
 }
 

@@ -50,7 +50,11 @@ struct LensPrescription {
   std::string description;            // e.g. "Double Gauss F/2, 22 deg HFOV"
   std::string source;                 // patent or book it was taken from
   double nominalFocalLengthMm = 0.0;  // 0 when unknown
-  std::string file;                   // where it was read from (for messages)
+  // The design's closest focus, from the entrance pupil as every lensrt focus
+  // distance is (mm); 0 when the file gives none (closestFocusDistanceMm then
+  // takes magnification 1:1).
+  double closestFocusMm = 0.0;
+  std::string file;  // where it was read from (for messages)
   std::vector<Surface> surfaces;
 
   int stopIndex() const;  // -1 when there is none

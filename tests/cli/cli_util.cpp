@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstring>
 #include <fstream>
@@ -78,7 +79,6 @@ std::vector<std::string> lines(const std::string& text) {
   return result;
 }
 
-namespace {
 std::string base64(const std::string& bytes) {
   static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -94,7 +94,6 @@ std::string base64(const std::string& bytes) {
   }
   return out;
 }
-}  // namespace
 
 std::string triangleGltf(const float (&positions)[9], const unsigned short (&indices)[3], int bufferBytes) {
   std::string data(44, '\0');
@@ -109,6 +108,60 @@ std::string triangleGltf(const float (&positions)[9], const unsigned short (&ind
          R"("buffers":[{"byteLength":)" +
          std::to_string(bufferBytes) + R"(,"uri":"data:application/octet-stream;base64,)" + base64(data) +
          R"("}]})";
+}
+
+std::string quadsGltf(const QuadScene& scene) {
+  const std::vector<Quad>& quads = scene.quads;
+  std::string data, meshes, accessors, views, nodes, sceneNodes;
+  for (std::size_t q = 0; q < quads.size(); ++q) {
+    const std::size_t offset = data.size();
+    float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+    for (const auto& c : quads[q].corners)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
+    data.append(reinterpret_cast<const char*>(quads[q].corners), sizeof quads[q].corners);
+    const unsigned short indices[6] = {0, 1, 2, 0, 2, 3};
+    data.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    data.append(4, '\0');  // keep the next quad's floats 4-byte aligned
+    const std::string i = std::to_string(q);
+    const auto sep = [&](std::string& s) { s += s.empty() ? "" : ","; };
+    sep(views);
+    views += R"({"buffer":0,"byteOffset":)" + std::to_string(offset) + R"(,"byteLength":48},)" +
+             R"({"buffer":0,"byteOffset":)" + std::to_string(offset + 48) + R"(,"byteLength":12})";
+    sep(accessors);
+    accessors += R"({"bufferView":)" + std::to_string(2 * q) +
+                 R"(,"componentType":5126,"count":4,"type":"VEC3",)" + R"("min":[)" + std::to_string(lo[0]) +
+                 "," + std::to_string(lo[1]) + "," + std::to_string(lo[2]) + R"(],"max":[)" +
+                 std::to_string(hi[0]) + "," + std::to_string(hi[1]) + "," + std::to_string(hi[2]) +
+                 R"(]},)" + R"({"bufferView":)" + std::to_string(2 * q + 1) +
+                 R"(,"componentType":5123,"count":6,"type":"SCALAR"})";
+    sep(meshes);
+    meshes += R"({"primitives":[{"attributes":{"POSITION":)" + std::to_string(2 * q) + R"(},"indices":)" +
+              std::to_string(2 * q + 1) + R"(,"material":)" + std::to_string(quads[q].material) + "}]}";
+    sep(nodes);
+    nodes += R"({"mesh":)" + i + "}";
+    sep(sceneNodes);
+    sceneNodes += i;
+  }
+  nodes += R"(,{"camera":0,)";
+  nodes += scene.cameraPlacement;
+  nodes += "}";
+  sceneNodes += ",";
+  sceneNodes += std::to_string(quads.size());
+  std::string extensions;
+  if (!scene.light.empty()) {
+    nodes += R"(,{"translation":[0,1,0],"extensions":{"KHR_lights_punctual":{"light":0}}})";
+    sceneNodes += ",";
+    sceneNodes += std::to_string(quads.size() + 1);
+    extensions =
+        R"("extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":[)" +
+        scene.light + "]}},";
+  }
+  return R"({"asset":{"version":"2.0"},)" + extensions + R"("scene":0,"scenes":[{"nodes":[)" + sceneNodes +
+         R"(]}],"cameras":[{"type":"perspective","perspective":{"yfov":)" + std::to_string(scene.yfov) +
+         R"(,"znear":0.001}}],"nodes":[)" + nodes + R"(],"meshes":[)" + meshes + R"(],"materials":[)" +
+         scene.materials + R"(],"accessors":[)" + accessors + R"(],"bufferViews":[)" + views +
+         R"(],"buffers":[{"byteLength":)" + std::to_string(data.size()) +
+         R"(,"uri":"data:application/octet-stream;base64,)" + base64(data) + R"("}]})";
 }
 
 }  // namespace lensrt::cli

@@ -33,6 +33,26 @@ std::string readFile(const std::filesystem::path& file);
 void writeFile(const std::filesystem::path& file, const std::string& contents);
 std::vector<std::string> lines(const std::string& text);
 
+// Standard base64 with padding, for data: URIs.
+std::string base64(const std::string& bytes);
+
+// A glTF of quads (two triangles each, one mesh per quad) with a data: URI
+// buffer, one perspective camera and, optionally, one KHR_lights_punctual
+// light 1 m above the origin.
+struct Quad {
+  float corners[4][3];  // counterclockwise seen from the front
+  int material;         // index into the materials
+};
+struct QuadScene {
+  std::vector<Quad> quads;
+  std::string materials;  // glTF material objects, comma-separated
+  std::string light;      // a KHR_lights_punctual light object, or none
+  // The camera node's placement: 2 m above the origin looking straight down.
+  std::string cameraPlacement = R"("translation":[0,2,0],"rotation":[-0.707106781,0,0,0.707106781])";
+  double yfov = 0.5;  // radians
+};
+std::string quadsGltf(const QuadScene& scene);
+
 // A one-triangle glTF with its buffer as a data URI. `bufferBytes` < 44 cuts
 // the buffer short.
 std::string triangleGltf(const float (&positions)[9], const unsigned short (&indices)[3],
