@@ -139,6 +139,10 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
             why, kDefaultSkyRadiance * options.environment.intensity));
     }
   }
+  if (lights_->empty() && !options.quiet)
+    warnings.warn(
+        "the scene has no lights, emissive surfaces or environment: the image will be black "
+        "(try --env constant:1)");
   IntegratorSettings integratorSettings;
   integratorSettings.maxDepth = options.maxDepth;
   integrator_ =
