@@ -20,7 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "app/camera_options.h"
+#include "api/camera_options.h"
+#include "app/camera_flags.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "render/environment.h"

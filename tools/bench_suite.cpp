@@ -39,9 +39,10 @@
 #include <string>
 #include <vector>
 
-#include "app/camera_options.h"
-#include "app/render_job.h"
-#include "app/render_options.h"
+#include "api/camera_options.h"
+#include "api/render_job.h"
+#include "api/render_options.h"
+#include "app/camera_flags.h"
 #include "core/error.h"
 #include "render/environment.h"
 #include "render/integrator.h"

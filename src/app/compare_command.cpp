@@ -15,14 +15,16 @@
 #include <string>
 #include <vector>
 
-#include "app/camera_options.h"
-#include "app/cluster.h"
+#include "api/camera_options.h"
+#include "api/render_job.h"
+#include "api/render_options.h"
+#include "api/text_file.h"
+#include "app/camera_flags.h"
 #include "app/command.h"
-#include "app/compare_report.h"
-#include "app/distributed_render.h"
-#include "app/render_job.h"
-#include "app/render_options.h"
-#include "app/text_file.h"
+#include "app/render_flags.h"
+#include "cluster/cluster.h"
+#include "cluster/distributed_render.h"
+#include "cluster/job_on_ranks.h"
 #include "core/error.h"
 #include "image/contact_sheet.h"
 #include "image/heatmap.h"
@@ -30,6 +32,7 @@
 #include "image/image_io.h"
 #include "optics/lens_readers.h"
 #include "optics/paraxial.h"
+#include "report/compare_report.h"
 
 namespace lensrt {
 namespace {
@@ -178,7 +181,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   for (std::size_t i = 0; i < kModels.size(); ++i) {
     if (!args.quiet)
       fmt::print(stderr, "lensrt: compare: {} ({}/{})\n", cameras[i]->describe(), i + 1, kModels.size());
-    results.push_back(job.render(*cameras[i], settings, args.quiet, cluster));
+    results.push_back(renderOnRanks(job, *cameras[i], settings, args.quiet, cluster));
     if (!leader) continue;
     writeImage(dir / (std::string(kModels[i]) + ".exr"), results.back().output.image,
                job.metadata(*cameras[i], settings, results.back(), context.commandLine));

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/lens_loading.h"
+#include "api/lens_loading.h"
 #include "app/lens_subcommands.h"
 #include "app/option_checks.h"
 #include "core/constants.h"
@@ -231,7 +231,8 @@ CommandAction addLensInfoCommand(CLI::App& lensApp, const CommandContext&) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* info =
       lensApp.add_subcommand("info", "Print a lens's focal lengths, cardinal points, pupils, FOV and DoF");
-  info->add_option("lens", options->lens, "Lens file (.lens, .json, .dat, .zmx) or library name, e.g. dgauss-50mm")
+  info->add_option("lens", options->lens,
+                   "Lens file (.lens, .json, .dat, .zmx) or library name, e.g. dgauss-50mm")
       ->required();
   info->add_option("--sensor", options->sensor, "Sensor size WIDTHxHEIGHT in mm")->capture_default_str();
   info->add_option("--fstop", options->fNumber, "Stop down to this f-number (default: widest)")

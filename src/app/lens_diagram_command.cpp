@@ -3,9 +3,9 @@
 
 #include <memory>
 
-#include "app/lens_diagram.h"
-#include "app/lens_plot_setup.h"
 #include "app/lens_subcommands.h"
+#include "app/lens_view_flags.h"
+#include "report/lens_diagram.h"
 
 namespace lensrt {
 

@@ -4,10 +4,10 @@
 
 #include <memory>
 
-#include "app/lens_plot.h"
-#include "app/lens_plot_setup.h"
+#include "api/text_file.h"
 #include "app/lens_subcommands.h"
-#include "app/text_file.h"
+#include "app/lens_view_flags.h"
+#include "report/lens_plot.h"
 
 namespace lensrt {
 

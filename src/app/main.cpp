@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "app/cluster.h"
 #include "app/command.h"
+#include "cluster/cluster.h"
 #include "core/error.h"
 
 namespace {
@@ -151,6 +151,8 @@ int main(int argc, char** argv) {
       if (sub->parsed()) return action();
   } catch (const CLI::ParseError& e) {
     // Value checks done after parsing (units, ranges) are usage errors too.
+    return fail(2, e.what());
+  } catch (const lensrt::UsageError& e) {
     return fail(2, e.what());
   } catch (const lensrt::InputError& e) {
     return fail(1, e.what());

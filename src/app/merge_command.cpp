@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "api/output_file.h"
 #include "app/command.h"
-#include "app/output_file.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "image/image_merge.h"

@@ -14,6 +14,8 @@
 #include <string>
 #include <system_error>
 
+#include "core/error.h"
+
 namespace lensrt {
 
 // An integer in [lo, hi] written in decimal (no sign for unsigned types).
@@ -56,6 +58,21 @@ inline CLI::Validator aNumber(const std::string& what) {
         return "expected a number (" + what + "), got '" + text + "'";
       },
       "NUMBER");
+}
+
+// A CLI11 check from a parser that throws UsageError("--flag", why).
+template <class Parse>
+CLI::Validator checkWith(Parse parse, const std::string& description) {
+  return CLI::Validator(
+      [parse](std::string& text) -> std::string {
+        try {
+          parse(text);
+          return "";
+        } catch (const UsageError& e) {
+          return e.message();
+        }
+      },
+      description);
 }
 
 }  // namespace lensrt

@@ -14,16 +14,18 @@
 #include <string>
 #include <vector>
 
-#include "app/camera_options.h"
-#include "app/checkpoint.h"
-#include "app/cluster.h"
+#include "api/camera_options.h"
+#include "api/output_file.h"
+#include "api/render_job.h"
+#include "api/render_options.h"
+#include "app/camera_flags.h"
 #include "app/command.h"
-#include "app/distributed_render.h"
-#include "app/interrupt.h"
 #include "app/option_checks.h"
-#include "app/output_file.h"
-#include "app/render_job.h"
-#include "app/render_options.h"
+#include "app/render_flags.h"
+#include "cluster/checkpoint.h"
+#include "cluster/cluster.h"
+#include "cluster/distributed_render.h"
+#include "cluster/interrupt.h"
 #include "core/error.h"
 
 namespace lensrt {

@@ -1,7 +1,7 @@
 // The camera flags: parsing, the sensor crop, and how the factory derives the
 // simpler models from a lens (thin: EFL and its f-number; pinhole: the lens's
 // field of view at that focus) and focuses automatically.
-#include "app/camera_options.h"
+#include "api/camera_options.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 #include "camera/pinhole_camera.h"
 #include "camera/thin_lens_camera.h"
 #include "core/constants.h"
+#include "core/error.h"
 #include "optics/lens_readers.h"
 #include "optics/paraxial.h"
 
@@ -28,15 +29,15 @@ CameraOptions withLens(const std::string& model) {
 TEST(CameraOptions, ParsesSensorsAndShutterTimes) {
   EXPECT_EQ(parseSensor("aps-c"), (Vec2d{23.6, 15.6}));
   EXPECT_EQ(parseSensor("36x24"), (Vec2d{36, 24}));
-  EXPECT_THROW(parseSensor("36x"), CLI::ValidationError);
-  EXPECT_THROW(parseSensor("big"), CLI::ValidationError);
+  EXPECT_THROW(parseSensor("36x"), UsageError);
+  EXPECT_THROW(parseSensor("big"), UsageError);
   EXPECT_DOUBLE_EQ(parseShutter("1/250"), 0.004);
   EXPECT_DOUBLE_EQ(parseShutter("2"), 2.0);
-  EXPECT_THROW(parseShutter("0"), CLI::ValidationError);
+  EXPECT_THROW(parseShutter("0"), UsageError);
   try {
     parseShutter("soon");
     FAIL();
-  } catch (const CLI::ValidationError& e) {
+  } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("--shutter"), std::string::npos) << e.what();
   }
 }
@@ -114,7 +115,7 @@ TEST(CameraOptions, UsageErrorsNameTheFlag) {
     try {
       makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
       ADD_FAILURE() << "no error for " << flag;
-    } catch (const CLI::ValidationError& e) {
+    } catch (const UsageError& e) {
       EXPECT_NE(std::string(e.what()).find(flag), std::string::npos) << e.what();
     }
   };
@@ -162,14 +163,14 @@ TEST(CameraOptions, FilmIsRadianceForThePinholeAndIrradianceOnRequest) {
     try {
       makeCamera(o, gltf, test::rasterFilm(32, 32), {}, w);
       ADD_FAILURE() << model << " accepted --film radiance";
-    } catch (const CLI::ValidationError& e) {
+    } catch (const UsageError& e) {
       EXPECT_NE(std::string(e.what()).find("--film"), std::string::npos) << e.what();
     }
   }
   // Physical exposure is a film irradiance: with the radiance film it is refused.
   CameraOptions physical;
   physical.exposure = "physical";
-  EXPECT_THROW(makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w), CLI::ValidationError);
+  EXPECT_THROW(makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w), UsageError);
   physical.film = "irradiance";
   EXPECT_NO_THROW(makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w));
 }

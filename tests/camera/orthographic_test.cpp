@@ -6,7 +6,7 @@
 #include <cmath>
 #include <memory>
 
-#include "app/camera_options.h"
+#include "api/camera_options.h"
 #include "camera/camera_test_util.h"
 #include "camera/orthographic_camera.h"
 #include "camera/pinhole_camera.h"

@@ -1,6 +1,6 @@
 // How lensrt reads the MPI launcher's environment: which processes belong to
 // a job, and the error of a build without MPI started as several processes.
-#include "app/cluster.h"
+#include "cluster/cluster.h"
 
 #include <gtest/gtest.h>
 

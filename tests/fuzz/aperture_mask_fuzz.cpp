@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "app/aperture_mask_file.h"
+#include "api/aperture_mask_file.h"
 #include "core/error.h"
 #include "fuzz/fuzz_check.h"
 

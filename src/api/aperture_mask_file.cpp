@@ -1,0 +1,97 @@
+#include "api/aperture_mask_file.h"
+
+#include <fmt/format.h>
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace lensrt {
+namespace {
+
+constexpr int kMaxSide = 4096;
+
+// A PNG's size from its IHDR chunk, checked before decoding so that a
+// header claiming gigapixels is refused instead of allocated.
+bool pngSize(std::string_view b, std::uint32_t& w, std::uint32_t& h) {
+  static const char kSignature[] = "\x89PNG\r\n\x1a\n";
+  if (b.size() < 24 || b.compare(0, 8, kSignature, 8) != 0 || b.compare(12, 4, "IHDR") != 0) return false;
+  const auto be32 = [&](std::size_t at) {
+    return std::uint32_t(std::uint8_t(b[at])) << 24 | std::uint32_t(std::uint8_t(b[at + 1])) << 16 |
+           std::uint32_t(std::uint8_t(b[at + 2])) << 8 | std::uint32_t(std::uint8_t(b[at + 3]));
+  };
+  w = be32(16), h = be32(20);
+  return true;
+}
+
+std::string readBytes(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw InputError(file.string(), "no such file");
+  if (std::filesystem::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) throw InputError(file.string(), "cannot read: " + ec.message());
+  if (size > (64u << 20)) throw InputError(file.string(), "the aperture mask file is larger than 64 MiB");
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw InputError(file.string(), "cannot read the file");
+  return bytes;
+}
+
+}  // namespace
+
+ApertureMask readApertureMask(const std::filesystem::path& file) {
+  return decodeApertureMask(readBytes(file), file.string());
+}
+
+ApertureMask decodeApertureMask(std::string_view bytes, const std::string& name) {
+  if (std::uint32_t w = 0, h = 0; pngSize(bytes, w, h) && (w > kMaxSide || h > kMaxSide))
+    throw InputError(name,
+                     fmt::format("the aperture mask is {}x{}, larger than {}x{}", w, h, kMaxSide, kMaxSide));
+  tinygltf::Image image;
+  std::string err, warn;
+  // The decoder of the glTF textures (stb_image): errors come back as text.
+  const bool ok =
+      !bytes.empty() && tinygltf::LoadImageData(&image, 0, &err, &warn, 0, 0,
+                                                reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                static_cast<int>(bytes.size()), nullptr);
+  const int channels = image.component;
+  const std::size_t bytesPerValue = image.bits == 16 ? 2 : 1;
+  if (!ok || image.width <= 0 || image.height <= 0 || channels < 1 || channels > 4 ||
+      (image.bits != 8 && image.bits != 16) ||
+      image.image.size() <
+          std::size_t(image.width) * std::size_t(image.height) * std::size_t(channels) * bytesPerValue)
+    throw InputError(name, "cannot decode the aperture mask (expected a PNG, JPEG, BMP or TGA image)");
+  if (image.width > kMaxSide || image.height > kMaxSide)
+    throw InputError(name, fmt::format("the aperture mask is {}x{}, larger than {}x{}", image.width,
+                                       image.height, kMaxSide, kMaxSide));
+  // Grey and grey+alpha images carry grey in channel 0; RGB(A) its mean.
+  const int colours = channels >= 3 ? 3 : 1;
+  const double full = image.bits == 16 ? 65535.0 : 255.0;
+  const auto value = [&](std::size_t i) {
+    if (bytesPerValue == 1) return double(image.image[i]);
+    std::uint16_t v = 0;  // stb_image keeps 16-bit values in the machine's byte order
+    std::memcpy(&v, &image.image[2 * i], sizeof v);
+    return double(v);
+  };
+  std::vector<float> values(std::size_t(image.width) * std::size_t(image.height));
+  for (std::size_t p = 0; p < values.size(); ++p) {
+    double sum = 0.0;
+    for (int c = 0; c < colours; ++c) sum += value(p * std::size_t(channels) + std::size_t(c));
+    values[p] = float(sum / (colours * full));
+  }
+  try {
+    return ApertureMask(image.width, image.height, std::move(values),
+                        std::filesystem::path(name).filename().string());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(name, std::string("aperture mask: ") + e.what());
+  }
+}
+
+}  // namespace lensrt

@@ -1,0 +1,316 @@
+#include "api/camera_options.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "api/aperture_mask_file.h"
+#include "api/lens_loading.h"
+#include "camera/lens_camera.h"
+#include "camera/orthographic_camera.h"
+#include "camera/pinhole_camera.h"
+#include "camera/thick_lens_camera.h"
+#include "camera/thin_lens_camera.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "optics/chromatic.h"
+#include "optics/focus.h"
+#include "optics/lens_readers.h"
+#include "optics/paraxial.h"
+
+namespace lensrt {
+namespace {
+
+std::optional<double> parseDouble(std::string_view s) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+const std::map<std::string, Vec2d>& sensorNames() {
+  static const std::map<std::string, Vec2d> names{
+      {"full-frame", {36.0, 24.0}}, {"aps-c", {23.6, 15.6}}, {"mft", {17.3, 13.0}}, {"1in", {13.2, 8.8}}};
+  return names;
+}
+
+std::string metresText(double m) {
+  return std::isinf(m) ? "inf" : fmt::format("{:.4g}", m);
+}
+
+}  // namespace
+
+// "auto" -> nullopt; "inf"/"infinity" -> infinity; else positive metres.
+std::optional<double> parseFocus(const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  if (text == "inf" || text == "infinity") return kInfinity;
+  const auto v = parseDouble(text);
+  if (!v || !(*v > 0.0))
+    throw UsageError("--focus", "expected a distance in metres > 0, auto or inf, got '" + text + "'");
+  return *v;
+}
+
+Vec2d parseFocusPixel(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  const auto x = comma == std::string::npos ? std::nullopt : parseDouble(text.substr(0, comma));
+  const auto y = comma == std::string::npos ? std::nullopt : parseDouble(text.substr(comma + 1));
+  if (!x || !y) throw UsageError("--focus-pixel", "expected X,Y in pixels, got '" + text + "'");
+  return {*x, *y};
+}
+
+Vec2d parseSensor(const std::string& text) {
+  if (const auto it = sensorNames().find(text); it != sensorNames().end()) return it->second;
+  const std::size_t x = text.find_first_of("xX");
+  const auto w = x == std::string::npos ? std::nullopt : parseDouble(text.substr(0, x));
+  const auto h = x == std::string::npos ? std::nullopt : parseDouble(text.substr(x + 1));
+  if (!w || !h || !(*w > 0.0) || !(*h > 0.0) || *w > 1000.0 || *h > 1000.0)
+    throw UsageError("--sensor",
+                     "expected WxH in mm (e.g. 36x24) or full-frame, aps-c, mft, 1in; got '" + text + "'");
+  return {*w, *h};
+}
+
+double parseShutter(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  std::optional<double> v;
+  if (slash == std::string::npos) {
+    v = parseDouble(text);
+  } else {
+    const auto a = parseDouble(text.substr(0, slash)), b = parseDouble(text.substr(slash + 1));
+    if (a && b && *b > 0.0) v = *a / *b;
+  }
+  if (!v || !(*v > 0.0) || *v > 1e6)
+    throw UsageError("--shutter", "expected a time in seconds > 0 (e.g. 0.01 or 1/100), got '" + text + "'");
+  return *v;
+}
+
+FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {
+  const Vec2d sensor = parseSensor(options.sensor);
+  FilmGeometry f;
+  f.width = width;
+  f.height = height;
+  const double aspect = double(width) / double(height);
+  if (aspect >= sensor.x / sensor.y) {
+    f.sensorWidthMm = sensor.x;
+    f.sensorHeightMm = sensor.x / aspect;
+  } else {
+    f.sensorHeightMm = sensor.y;
+    f.sensorWidthMm = sensor.y * aspect;
+  }
+  return f;
+}
+
+namespace {
+std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gltf, const FilmGeometry& film,
+                                    const std::optional<LensPrescription>& lens, Warnings& warnings,
+                                    const HitDistance& hitDistance);
+}  // namespace
+
+std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& gltf, FilmGeometry rasterFilm,
+                                   const HitDistance& hitDistance, Warnings& warnings) {
+  const FilmGeometry film = cameraFilm(o, rasterFilm.width, rasterFilm.height);
+  if (gltf.orthographic) {
+    // Parallel rays are the pinhole model's radiance film without a lens; a
+    // lens (or what a lens defines: a focal length, an exposure) makes a
+    // perspective picture.
+    const bool plain = o.model == "pinhole" && o.lens.empty() && !o.focalLengthMm && o.film != "irradiance" &&
+                       o.exposure != "physical";
+    if (plain) {
+      const double aspect = double(film.width) / film.height, glTFAspect = double(gltf.xmag) / gltf.ymag;
+      if (std::abs(aspect / glTFAspect - 1.0) > 0.01)
+        warnings.warn(
+            fmt::format("camera '{}' is orthographic with xmag/ymag {:.4g}, but the image's aspect "
+                        "ratio is {:.4g}: keeping ymag, the view is {:.4g} m wide",
+                        gltf.name, glTFAspect, aspect, 2.0 * gltf.ymag * aspect));
+      return std::make_unique<OrthographicCamera>(gltf.worldFromCamera, film, gltf.ymag);
+    }
+    // One text whatever the model: `lensrt compare` makes four cameras and
+    // warns once (Warnings drops repeats).
+    warnings.warn("camera '" + gltf.name +
+                  "' is orthographic; a lens model (thin, thick, lens), --lens, --focal-length or an "
+                  "irradiance film renders it in perspective");
+  }
+
+  // Radiance film is the ideal pinhole's: a lens forms an image on a film, and
+  // what reaches the film is irradiance (a mean radiance over the pupil would
+  // hide the vignetting the lens models are there to show).
+  const bool radianceFilm = o.film == "radiance" || (o.film.empty() && o.model == "pinhole");
+  if (radianceFilm && o.model != "pinhole")
+    throw UsageError("--film", "radiance film is the pinhole's; --camera " + o.model +
+                                   " records film irradiance (--film irradiance, scaled by --exposure)");
+  if (radianceFilm && o.exposure == "physical")
+    throw UsageError("--exposure",
+                     "physical exposure needs the irradiance film: add --film irradiance "
+                     "(the pinhole's default film records radiance)");
+  if (o.exposure != "physical" && (!o.shutter.empty() || o.iso))
+    warnings.warn("--shutter and --iso only apply with --exposure physical; ignored");
+
+  // The lens, scaled to --focal-length when both are given.
+  std::optional<UserLens> user;
+  std::optional<LensPrescription> lens;
+  if (!o.lens.empty()) {
+    user = loadUserLens(o.lens, o.lensDir);
+    requireRealImage(*user);
+    if (o.focalLengthMm)
+      user->prescription =
+          user->prescription.scaled(*o.focalLengthMm / computeParaxial(user->prescription).efl);
+    lens = user->prescription;
+  } else if (o.model == "thick" || o.model == "lens") {
+    throw UsageError("--lens", "--camera " + o.model + " needs a lens, e.g. --lens dgauss-50mm");
+  }
+  // Everything below that the optics reject is about the lens: name it.
+  if (user)
+    return withLensErrors(*user, [&] { return buildCamera(o, gltf, film, lens, warnings, hitDistance); });
+  return buildCamera(o, gltf, film, lens, warnings, hitDistance);
+}
+
+namespace {
+
+std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gltf, const FilmGeometry& film,
+                                    const std::optional<LensPrescription>& lens, Warnings& warnings,
+                                    const HitDistance& hitDistance) {
+  const Transform& worldFromCamera = gltf.worldFromCamera;
+  Exposure exposure;
+  exposure.mode = o.exposure == "physical" ? ExposureMode::Physical : ExposureMode::Normalized;
+  if (!o.shutter.empty()) exposure.shutterSeconds = parseShutter(o.shutter);
+  if (o.iso) exposure.iso = *o.iso;
+  const std::optional<ParaxialData> paraxial = lens ? std::optional(computeParaxial(*lens)) : std::nullopt;
+  const double fNumber = o.fNumber ? *o.fNumber : paraxial ? paraxial->fNumber : 2.8;
+  const ApertureShape aperture{o.blades, o.bladeRotationDegrees};
+
+  // Focal length and the infinity-focus field of view without a lens.
+  const double yfovGltf = gltf.yfov;
+  const double focalMm = paraxial          ? paraxial->efl
+                         : o.focalLengthMm ? *o.focalLengthMm
+                                           : 0.5 * film.sensorHeightMm / std::tan(0.5 * yfovGltf);
+  const double yfovInfinity =
+      paraxial || o.focalLengthMm ? 2.0 * std::atan(0.5 * film.sensorHeightMm / focalMm) : yfovGltf;
+
+  // The closest focus: the lens's own (its file's, else magnification 1:1),
+  // the same for all four models derived from it so that they stay
+  // comparable; an ideal thin lens without one stops at 1:1 too (2f).
+  const double closestMm = lens ? closestFocusDistanceMm(LensSystem(*lens)) : 2.0 * focalMm;
+  const std::string optic = o.model == "thin" ? fmt::format("the thin lens (f = {:.4g} mm)", focalMm)
+                            : lens            ? lens->name
+                                              : "the lens";
+
+  // Focus: what the chosen pixel sees, measured along the axis.
+  std::optional<double> focus = parseFocus(o.focus);
+  if (!o.focusPixel.empty() && focus) throw UsageError("--focus-pixel", "only applies with --focus auto");
+  const bool needsFocus = o.model != "pinhole" || lens.has_value();
+  if (!focus && needsFocus) {
+    Vec2d pixel{film.width / 2.0, film.height / 2.0};
+    if (!o.focusPixel.empty()) {
+      pixel = parseFocusPixel(o.focusPixel);
+      if (pixel.x < 0 || pixel.y < 0 || pixel.x >= film.width || pixel.y >= film.height)
+        throw UsageError("--focus-pixel", fmt::format("{},{} is outside the {}x{} image", pixel.x, pixel.y,
+                                                      film.width, film.height));
+      pixel = {pixel.x + 0.5, pixel.y + 0.5};
+    }
+    const PinholeCamera aim(worldFromCamera, film, yfovInfinity);
+    CameraSample s;
+    s.film = {float(pixel.x), float(pixel.y)};
+    const auto ray = aim.generateRay(s);
+    const std::optional<double> hit = hitDistance && ray ? hitDistance(ray->ray) : std::nullopt;
+    if (hit && *hit > 0.0 && std::isfinite(*hit)) {
+      // The pinhole ray's direction in camera space has z = -1: axial distance = t cos.
+      const double tanX =
+          (2.0 * pixel.x / film.width - 1.0) * std::tan(0.5 * yfovInfinity) * film.width / film.height;
+      const double tanY = (1.0 - 2.0 * pixel.y / film.height) * std::tan(0.5 * yfovInfinity);
+      focus = *hit / std::sqrt(1.0 + tanX * tanX + tanY * tanY);
+    } else {
+      warnings.warn("--focus auto: the focus pixel sees no surface; focusing at infinity");
+      focus = kInfinity;
+    }
+    // Too close for the optics: focus as close as they can.
+    const double closestM = closestMm / 1000.0;
+    if (*focus < closestM) {
+      warnings.warn(
+          fmt::format("--focus auto: the surface at {:.4g} m is closer than {} focuses; focusing at its "
+                      "closest, {:.4g} m",
+                      *focus, lens ? lens->name : optic, closestM));
+      focus = closestM;
+    }
+  }
+  const double focusM = focus.value_or(kInfinity);
+  if (needsFocus && !std::isinf(focusM) && focusM * 1000.0 < closestMm * (1 - 1e-12))
+    throw UsageError("--focus", fmt::format("{} cannot focus at {:g} m (its closest focus is {:.4g} m)",
+                                            optic, focusM, closestMm / 1000.0));
+
+  // What the camera models still reject is about the lens (makeCamera names
+  // it) or the glTF camera (RenderJob names the scene).
+  const std::string lensName = lens ? lens->name : "";
+  if (!o.apertureMask.empty() && o.model != "lens")
+    throw UsageError("--aperture-mask", "needs --camera lens (the mask sits at the lens's stop)");
+  if (o.model == "pinhole") {
+    const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
+    if (o.film == "irradiance")
+      return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
+    return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, lensName);
+  }
+  if (o.model == "thin") {
+    ThinLensParams p;
+    p.focalLengthMm = focalMm;
+    p.fNumber = fNumber;
+    p.focusMetres = focusM;
+    p.aperture = aperture;
+    p.lensName = lensName;
+    if (lens && o.dispersion == "on" && hasDispersion(*lens)) p.dispersion.emplace(*lens);
+    return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
+  }
+  if (o.model == "thick") {
+    if (o.fNumber && *o.fNumber < paraxial->fNumber * (1 - 1e-9))
+      warnings.warn(fmt::format("{}: f/{:g} is wider than the lens allows; the thick lens opens to it anyway",
+                                lensName, *o.fNumber));
+    ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
+    p.aperture = aperture;
+    p.lensName = lensName;
+    if (o.dispersion == "on" && hasDispersion(*lens)) p.dispersion.emplace(*lens);
+    return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
+  }
+  LensCameraParams p;
+  if (!o.apertureMask.empty()) {
+    if (o.blades) throw UsageError("--aperture-mask", "replaces --blades: give one of them");
+    p.mask = std::make_shared<const ApertureMask>(readApertureMask(o.apertureMask));
+  }
+  p.fNumber = fNumber;
+  p.focusMetres = focusM;
+  p.aperture = aperture;
+  p.dispersion = o.dispersion == "on";
+  p.coatings = parseCoating(o.coatings);
+  return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
+}
+
+// Sixteen numbers, row by row, to float precision and more.
+std::string matrixText(const Transform::Matrix& m) {
+  std::string s;
+  for (const auto& row : m)
+    for (const double v : row) s += fmt::format("{}{:.9g}", s.empty() ? "" : " ", v);
+  return s;
+}
+
+}  // namespace
+
+ImageMetadata cameraMetadata(const Camera& camera) {
+  const CameraInfo i = camera.info();
+  const FilmGeometry& f = camera.film();
+  return {
+      {"lensrt:camera_model", i.model},
+      {"lensrt:lens", i.lens.empty() ? "none" : i.lens},
+      {"lensrt:f_number", i.fNumber > 0 ? fmt::format("{:.3g}", i.fNumber) : "none"},
+      {"lensrt:focus_m", i.focusMetres > 0 ? metresText(i.focusMetres) : "none"},
+      {"lensrt:focal_length_mm", fmt::format("{:.4g}", i.focalLengthMm)},
+      {"lensrt:sensor_mm", fmt::format("{:.4g}x{:.4g}", f.sensorWidthMm, f.sensorHeightMm)},
+      {"lensrt:exposure", i.exposure},
+      {"lensrt:coatings", i.coatings.empty() ? "off (lossless)" : i.coatings},
+      // Where the camera stood, so another renderer can take the same view
+      // (tools/validate-cycles does): glTF world space, metres, row by row.
+      {"lensrt:world_from_camera", matrixText(camera.worldFromCamera().matrix())},
+      {"lensrt:dispersion", i.dispersion ? "on" : "off"},
+      {"lensrt:film", i.film},
+  };
+}
+
+}  // namespace lensrt

@@ -1,0 +1,22 @@
+// The image a command writes (-o): checked before any work is done, and
+// written with errors that name that file rather than the temporary one the
+// image layer writes first.
+#pragma once
+
+#include <filesystem>
+
+#include "image/image.h"
+
+namespace lensrt {
+
+// Throws UsageError (exit 2) for a name that is no image file, and
+// InputError (exit 1) when the file cannot be created there: the directory is
+// missing, not a directory, not writable (checked by creating and removing a
+// probe file, so read-only mounts, /proc and /sys are caught even for root),
+// or its disk is full.
+void checkOutputFile(const std::filesystem::path& out);
+
+// writeImage, with a failure reported against `out` (a full disk as such).
+void writeOutputImage(const std::filesystem::path& out, const Image& image, const ImageMetadata& metadata);
+
+}  // namespace lensrt

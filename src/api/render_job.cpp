@@ -1,0 +1,238 @@
+#include "api/render_job.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "api/scene_digest.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "image/image_io.h"
+#include "render/light_level.h"
+#include "render/progress.h"
+#include "render/render_identity.h"
+#include "scene/camera_selection.h"
+#include "scene/gltf_loader.h"
+#include "scene/selection_error.h"
+
+namespace lensrt {
+namespace {
+constexpr int kDefaultWidth = 640, kDefaultHeight = 360;
+
+// Asking for a camera or scene the file does not have is a wrong flag value
+// (exit 2), not a broken file.
+template <class F>
+auto asFlagError(const char* flag, F&& f) {
+  try {
+    return f();
+  } catch (const SelectionError& e) {
+    throw UsageError(flag, e.file() + ": " + e.message());
+  }
+}
+// A 32x18 grid of rays over the glTF camera's view (parallel ones for an
+// orthographic camera): where the weak-light test looks.
+std::vector<Ray> probeRays(const CameraDesc& camera, float aspect) {
+  constexpr int kColumns = 32, kRows = 18;
+  std::vector<Ray> rays;
+  const float tanY = std::tan(0.5f * camera.yfov);
+  for (int j = 0; j < kRows; ++j)
+    for (int i = 0; i < kColumns; ++i) {
+      const float x = 2 * (i + 0.5f) / kColumns - 1, y = 1 - 2 * (j + 0.5f) / kRows;
+      Ray r;
+      if (camera.orthographic) {
+        r.origin = camera.worldFromCamera.point(Vec3f{x * camera.ymag * aspect, y * camera.ymag, 0});
+        r.direction = normalize(camera.worldFromCamera.vector(Vec3f{0, 0, -1}));
+      } else {
+        r.origin = camera.worldFromCamera.point(Vec3f{0, 0, 0});
+        r.direction = normalize(camera.worldFromCamera.vector(Vec3f{x * tanY * aspect, y * tanY, -1}));
+      }
+      rays.push_back(r);
+    }
+  return rays;
+}
+}  // namespace
+
+Environment makeEnvironment(const EnvironmentSpec& spec) {
+  const auto adjusted = [&](const Environment& e) {
+    const Environment scaled = spec.intensity == 1 ? e : e.scaled(float(spec.intensity));
+    return spec.rotationDegrees == 0 ? scaled : scaled.rotatedAboutY(float(spec.rotationDegrees));
+  };
+  if (spec.constant) return adjusted(Environment::constant(*spec.constant));
+  if (spec.file.empty()) return Environment();
+  const Image map = readImage(spec.file);
+  try {
+    return adjusted(Environment::latLong(map));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(spec.file, e.what());
+  }
+}
+
+Environment defaultEnvironment(const EnvironmentSpec& spec) {
+  EnvironmentSpec sky = spec;
+  sky.constant = Rgb{kDefaultSkyRadiance, kDefaultSkyRadiance, kDefaultSkyRadiance};
+  return makeEnvironment(sky);
+}
+
+RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_(options) {
+  const std::optional<Resolution>& res = options.resolution;
+  SceneDesc desc =
+      asFlagError("--scene-index", [&] { return loadGltf(options.scene, options.sceneIndex, warnings); });
+  const float defaultAspect = float(kDefaultWidth) / float(kDefaultHeight);
+  const float aspectGuess = res && res->height > 0 ? float(res->width) / float(res->height) : defaultAspect;
+  gltfCamera_ =
+      asFlagError("--camera-node", [&] { return selectCamera(desc, options.cameraNode, aspectGuess); });
+  // Without --res (or with a width only) the height follows the glTF camera's
+  // aspect ratio when it has one, else 16:9.
+  width_ = res ? res->width : kDefaultWidth;
+  height_ = res && res->height > 0 ? res->height : 0;
+  if (height_ == 0) {
+    const float aspect =
+        gltfCamera_.aspectRatio && *gltfCamera_.aspectRatio > 0 ? *gltfCamera_.aspectRatio : defaultAspect;
+    height_ = std::max(1, int(std::lround(float(width_) / aspect)));
+  }
+  if (!res || res->height == 0)
+    gltfCamera_ = asFlagError("--camera-node", [&] {
+      return selectCamera(desc, options.cameraNode, float(width_) / float(height_));
+    });
+  environment_ = std::make_unique<Environment>(makeEnvironment(options.environment));
+
+  scene_ = std::make_unique<RenderScene>(std::move(desc));
+  materials_ = std::make_unique<MaterialTable>(scene_->desc());
+  lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+  // Most glTF files leave the lighting to the viewer, which shows them under
+  // a default environment; so does lensrt, rather than render black. A scene
+  // whose own emitters are token ones (a few glowing parts) gets the sky too.
+  const bool environmentGiven =
+      options.environment.none || options.environment.constant || !options.environment.file.empty();
+  if (!environmentGiven) {
+    std::string why;
+    if (lights_->empty()) {
+      why = "the scene has no light source";
+    } else {
+      const std::vector<Ray> probes = probeRays(gltfCamera_, float(width_) / float(height_));
+      const double skyIrradiance = kPi * kDefaultSkyRadiance;
+      const std::optional<double> level = medianEmitterIrradiance(*scene_, *materials_, probes);
+      const bool punctual = std::any_of(scene_->desc().lights.begin(), scene_->desc().lights.end(),
+                                        [](const PunctualLight& l) { return luminance(l.intensity) > 0; });
+      const double fraction = punctual ? kWeakLightFraction : kWeakGlowFraction;
+      if (level && *level < fraction * skyIrradiance)
+        why = fmt::format(
+            "the scene's own light is too weak to light it (what the camera sees gets {:.3g} W/m^2 from its "
+            "{}, under {:g}% of the default sky's {:.4g}; --env none keeps its light alone)",
+            *level, punctual ? "lights" : "emissive surfaces", 100 * fraction, skyIrradiance);
+    }
+    if (!why.empty()) {
+      *environment_ = defaultEnvironment(options.environment);
+      lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+      defaultEnvironment_ = true;
+      if (!lights_->empty() && !options.quiet)
+        warnings.warn(fmt::format(
+            "{}: lighting it with the default environment, a uniform sky of radiance {:g} (--env chooses "
+            "another)",
+            why, kDefaultSkyRadiance * options.environment.intensity));
+    }
+  }
+  if (lights_->empty() && !options.quiet)
+    warnings.warn(
+        "the scene has no lights, emissive surfaces or environment: the image will be black "
+        "(try --env constant:1)");
+  IntegratorSettings integratorSettings;
+  integratorSettings.maxDepth = options.maxDepth;
+  integrator_ =
+      std::make_unique<Integrator>(*scene_, *materials_, *lights_, *environment_, integratorSettings);
+}
+
+RenderJob::~RenderJob() = default;
+
+std::string RenderJob::environmentDescription() const {
+  return (defaultEnvironment_ ? "default " : "") + environment_->describe();
+}
+
+std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warnings& warnings) const {
+  const HitDistance hitDistance = [this](const Ray& ray) -> std::optional<double> {
+    const std::optional<SurfaceHit> hit = scene_->intersect(ray);
+    return hit ? std::optional<double>(hit->t) : std::nullopt;
+  };
+  try {
+    FilmGeometry raster;
+    raster.width = width_;
+    raster.height = height_;
+    return lensrt::makeCamera(options, gltfCamera_, raster, hitDistance, warnings);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(options_.scene, "camera '" + gltfCamera_.name + "': " + e.what());
+  }
+}
+
+RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& settings, bool quiet) const {
+  const auto start = std::chrono::steady_clock::now();
+  RenderJobResult result;
+  {
+    const FilmGeometry& film = camera.film();
+    Progress progress(
+        std::uint64_t(film.width) * std::uint64_t(film.height) * std::uint64_t(settings.samplesPerPixel),
+        Progress::styleFor(stderr, quiet));
+    result.output = renderImage(camera, *integrator_, settings, &progress);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+RenderJobResult RenderJob::renderPasses(const Camera& camera, const RenderSettings& settings,
+                                        FilmState& state, const PassControl& control, bool quiet,
+                                        bool& finished) const {
+  const auto start = std::chrono::steady_clock::now();
+  RenderJobResult result;
+  {
+    const int remaining = std::max(0, settings.samplesPerPixel - state.samplesDone());
+    Progress progress(state.region().pixelCount() * std::uint64_t(remaining),
+                      Progress::styleFor(stderr, quiet));
+    finished = lensrt::renderPasses(camera, *integrator_, settings, state, &control, &progress);
+  }
+  result.output = renderOutput(camera, state);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {
+  if (sceneDigest_.empty()) sceneDigest_ = sceneDigest(options_.scene, options_.environment.file);
+  std::string aovs;
+  for (const std::string& c : filmChannels(settings.aovs)) aovs += (aovs.empty() ? "" : ",") + c;
+  return {
+      {"lensrt:scene_sha256", sceneDigest_},
+      {"lensrt:camera", camera.describe()},
+      {"lensrt:settings", fmt::format("res={}x{} max_depth={} environment={} channels={}", width_, height_,
+                                      options_.maxDepth, environment_->describe(), aovs)},
+      {"lensrt:seed", std::to_string(settings.seed)},
+  };
+}
+
+ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& settings,
+                                  const RenderJobResult& result, const std::string& commandLine) const {
+  const RenderOutput& out = result.output;
+  const std::uint64_t pixels = std::uint64_t(out.image.width) * std::uint64_t(out.image.height);
+  ImageMetadata metadata{
+      {"lensrt:spp", std::to_string(pixels ? out.cameraSamples / pixels : 0)},
+      {"lensrt:camera_samples", std::to_string(out.cameraSamples)},
+      {"lensrt:blocked_camera_rays", std::to_string(out.blockedCameraRays)},
+      {"lensrt:max_depth", std::to_string(options_.maxDepth)},
+      {"lensrt:environment", environmentDescription()},
+      {"lensrt:render_seconds", fmt::format("{:.3f}", result.seconds)},
+      {"lensrt:version", LENSRT_VERSION},
+      {"lensrt:command_line", commandLine},
+      {"lensrt:nan_samples", std::to_string(result.output.droppedSamples)},
+      {"lensrt:camera_ray_efficiency", fmt::format("{:.4f}", result.output.cameraRayEfficiency())},
+  };
+  if (!out.image.isWholeFrame())
+    metadata["lensrt:region"] = PixelRegion{out.image.originX, out.image.originX + out.image.width,
+                                            out.image.originY, out.image.originY + out.image.height}
+                                    .describe();
+  metadata.merge(identity(camera, settings));
+  metadata.merge(cameraMetadata(camera));
+  return metadata;
+}
+
+}  // namespace lensrt

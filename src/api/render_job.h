@@ -1,0 +1,100 @@
+// The render pipeline shared by `lensrt render` and `lensrt compare`: the
+// scene, materials, lights and integrator are built once, then any number of
+// cameras render through them with the same settings.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "api/camera_options.h"
+#include "api/render_options.h"
+#include "camera/camera.h"
+#include "core/warnings.h"
+#include "image/image.h"
+#include "render/environment.h"
+#include "render/integrator.h"
+#include "render/lights.h"
+#include "render/material_eval.h"
+#include "render/renderer.h"
+#include "scene/render_scene.h"
+
+namespace lensrt {
+
+struct SceneOptions {
+  std::string scene;  // .gltf / .glb
+  int sceneIndex = -1;
+  std::string cameraNode;
+  std::optional<Resolution> resolution;  // none: 640 wide, height from the camera's aspect
+  EnvironmentSpec environment;
+  int maxDepth = 8;
+  bool quiet = false;  // no "no lights" warning
+};
+
+struct RenderJobResult {
+  RenderOutput output;
+  double seconds = 0.0;
+};
+
+class RenderJob {
+ public:
+  // Loads the scene and builds everything but the camera. Throws InputError.
+  RenderJob(const SceneOptions& options, Warnings& warnings);
+  ~RenderJob();
+  RenderJob(const RenderJob&) = delete;
+  RenderJob& operator=(const RenderJob&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const Integrator& integrator() const { return *integrator_; }
+
+  // One of the four models for these options, framed by the glTF camera;
+  // --focus auto asks the scene what the focus pixel sees.
+  std::unique_ptr<Camera> makeCamera(const CameraOptions& options, Warnings& warnings) const;
+
+  // Renders with a progress bar on stderr unless `quiet`.
+  RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
+
+  // Continues `state` to settings.samplesPerPixel in passes steered by
+  // `control` (see renderPasses); `finished` says whether it got there.
+  RenderJobResult renderPasses(const Camera& camera, const RenderSettings& settings, FilmState& state,
+                               const PassControl& control, bool quiet, bool& finished) const;
+
+  // The metadata that identifies this render (render/render_identity.h):
+  // scene digest, camera, settings, seed. Every option that changes the
+  // image must show in it, so that parts and checkpoints of other renders
+  // are refused.
+  ImageMetadata identity(const Camera& camera, const RenderSettings& settings) const;
+
+  // The EXR header of a render: its identity, region, timing, efficiency.
+  // "constant 1,1,1", "latlong 512x256 rotated 90deg", ... prefixed with
+  // "default " when the scene had no light and no --env (lensrt:environment).
+  std::string environmentDescription() const;
+
+  // The EXR header of a render: camera, settings, timing, efficiency.
+  ImageMetadata metadata(const Camera& camera, const RenderSettings& settings, const RenderJobResult& result,
+                         const std::string& commandLine) const;
+
+ private:
+  SceneOptions options_;
+  mutable std::string sceneDigest_;  // computed on first use
+  int width_ = 0, height_ = 0;
+  CameraDesc gltfCamera_;
+  std::unique_ptr<Environment> environment_;
+  bool defaultEnvironment_ = false;
+  std::unique_ptr<RenderScene> scene_;
+  std::unique_ptr<MaterialTable> materials_;
+  std::unique_ptr<LightSet> lights_;
+  std::unique_ptr<Integrator> integrator_;
+};
+
+// The radiance of the default environment, W/(sr m^2) in every direction: a
+// scene with no light source (no punctual light, no emissive surface) and no
+// --env is lit by it, times --env-intensity.
+inline constexpr float kDefaultSkyRadiance = 1.0f;
+
+// The environment a spec describes (black when it names none); reads the map
+// file. Throws InputError.
+Environment makeEnvironment(const EnvironmentSpec& spec);
+
+}  // namespace lensrt

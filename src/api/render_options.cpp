@@ -1,0 +1,126 @@
+#include "api/render_options.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+
+namespace lensrt {
+namespace {
+
+// Whole-string integer parse; no atoi-style silent garbage.
+std::optional<int> parseInt(const std::string& s) {
+  int v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<float> parseFloat(const std::string& s) {
+  try {
+    std::size_t used = 0;
+    const float v = std::stof(s, &used);
+    if (used != s.size()) return std::nullopt;
+    return v;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+constexpr int kMaxDimension = 65536;
+
+}  // namespace
+
+std::string checkResolution(const std::string& text) {
+  const std::size_t x = text.find_first_of("xX");
+  const std::optional<int> w = parseInt(text.substr(0, x));
+  const std::optional<int> h = x == std::string::npos ? std::optional<int>(0) : parseInt(text.substr(x + 1));
+  if (!w || !h) return "expected WIDTHxHEIGHT in pixels (e.g. 640x360) or WIDTH, got '" + text + "'";
+  if (*w < 1 || *w > kMaxDimension || (x != std::string::npos && (*h < 1 || *h > kMaxDimension)))
+    return "width and height must be between 1 and " + std::to_string(kMaxDimension) + " pixels, got '" +
+           text + "'";
+  return "";
+}
+
+Resolution parseResolution(const std::string& text) {
+  if (const std::string why = checkResolution(text); !why.empty()) throw UsageError("--res", why);
+  const std::size_t x = text.find_first_of("xX");
+  return {*parseInt(text.substr(0, x)), x == std::string::npos ? 0 : *parseInt(text.substr(x + 1))};
+}
+
+std::string checkEnvironment(const std::string& text) {
+  try {
+    parseEnvironment(text);
+    return "";
+  } catch (const UsageError& e) {
+    return e.message();
+  }
+}
+
+EnvironmentSpec parseEnvironment(const std::string& text) {
+  EnvironmentSpec spec;
+  if (text == "none") {
+    spec.none = true;
+    return spec;
+  }
+  constexpr std::string_view kConstant = "constant:";
+  if (text.rfind(kConstant, 0) == 0) {
+    std::vector<float> values;
+    std::string rest = text.substr(kConstant.size());
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = rest.find(',', start);
+      const std::optional<float> v = parseFloat(rest.substr(start, comma - start));
+      if (!v || !std::isfinite(*v) || *v < 0)
+        throw UsageError("--env",
+                         "constant radiance must be one or three finite values >= 0 in W/(sr m^2), "
+                         "e.g. constant:1 or constant:0.2,0.3,0.5, got '" +
+                             text + "'");
+      values.push_back(*v);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (values.size() != 1 && values.size() != 3)
+      throw UsageError("--env", "constant radiance takes one or three values, got '" + text + "'");
+    spec.constant =
+        values.size() == 1 ? Rgb{values[0], values[0], values[0]} : Rgb{values[0], values[1], values[2]};
+    return spec;
+  }
+  std::string ext = std::filesystem::path(text).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != ".exr" && ext != ".hdr")
+    throw UsageError(
+        "--env",
+        "expected none, constant:V, constant:R,G,B or a lat-long .exr/.hdr file, got '" + text + "'");
+  spec.file = text;
+  return spec;
+}
+
+EnvironmentSpec environmentSpec(const EnvironmentArgs& args) {
+  EnvironmentSpec spec;
+  if (!args.environment.empty()) spec = parseEnvironment(args.environment);
+  spec.rotationDegrees = args.rotationDegrees;
+  spec.intensity = args.intensity;
+  return spec;
+}
+
+AovSelection parseAovs(const std::vector<std::string>& names) {
+  AovSelection a;
+  for (const std::string& n : names) {
+    if (n == "depth")
+      a.depth = true;
+    else if (n == "normal")
+      a.normal = true;
+    else if (n == "albedo")
+      a.albedo = true;
+    else if (n == "variance")
+      a.variance = true;
+    else
+      throw UsageError("--aov", "unknown AOV '" + n + "' (choose from depth, normal, albedo, variance)");
+  }
+  return a;
+}
+
+}  // namespace lensrt

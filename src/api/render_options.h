@@ -1,0 +1,48 @@
+// Parsing of `lensrt render`'s option values that are more than a number:
+// --res, --env (with --env-rotate, --env-intensity) and --aov. Bad syntax
+// throws UsageError (exit 2); app/render_flags.h registers the flags.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec.h"
+#include "render/film.h"
+
+namespace lensrt {
+
+struct Resolution {
+  int width = 0;
+  int height = 0;  // 0: derive from the camera's aspect ratio
+};
+
+// "WxH" (e.g. 640x360) or "W" (height from the camera's aspect ratio).
+Resolution parseResolution(const std::string& text);
+
+// --env (neither constant nor file: the default, see RenderJob), --env-rotate
+// and --env-intensity.
+struct EnvironmentSpec {
+  bool none = false;            // --env none: the scene's own light alone, never the default sky
+  std::optional<Rgb> constant;  // constant:V or constant:R,G,B
+  std::string file;             // a lat-long .exr or .hdr
+  double rotationDegrees = 0;   // about +Y, right-hand rule: +90 puts the map's centre at -X
+  double intensity = 1;         // multiplies the radiance
+};
+EnvironmentSpec parseEnvironment(const std::string& text);
+
+// The three environment flags of `lensrt render` and `lensrt compare`.
+struct EnvironmentArgs {
+  std::string environment;  // --env; empty: the default
+  double rotationDegrees = 0;
+  double intensity = 1;
+};
+EnvironmentSpec environmentSpec(const EnvironmentArgs& args);
+
+AovSelection parseAovs(const std::vector<std::string>& names);
+
+// "" when `text` is a valid --res / --env value, else why not (for CLI11 checks).
+std::string checkResolution(const std::string& text);
+std::string checkEnvironment(const std::string& text);
+
+}  // namespace lensrt

@@ -1,0 +1,78 @@
+#include "app/camera_flags.h"
+
+#include "app/option_checks.h"
+
+namespace lensrt {
+
+void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
+#ifdef LENSRT_LENS_DIR
+  if (o.lensDir.empty()) o.lensDir = LENSRT_LENS_DIR;
+#endif
+  cmd.add_option("--camera", o.model,
+                 "camera model: pinhole, thin (ideal thin lens), thick (the lens's paraxial model) or lens "
+                 "(traced through every element of --lens); default pinhole")
+      ->check(CLI::IsMember({"pinhole", "thin", "thick", "lens"}));
+  cmd.add_option(
+      "--lens", o.lens,
+      "lens prescription: a .dat/.lens/.json/.zmx file or a library name, e.g. --lens dgauss-50mm; the "
+      "thin, thick and pinhole models then derive from it");
+  cmd.add_option("--fstop", o.fNumber, "f-number N, e.g. --fstop 2.8 (default: the lens wide open, else 2.8)")
+      ->check(numberIn(0.5, 1024.0, "the f-number"));
+  cmd.add_option("--focus", o.focus,
+                 "focus distance in metres from the entrance pupil, 'auto' (what the centre pixel, or "
+                 "--focus-pixel, sees) or 'inf'; default auto")
+      ->check(checkWith(parseFocus, "METRES|auto|inf"));
+  cmd.add_option("--focus-pixel", o.focusPixel, "pixel X,Y that --focus auto focuses on, e.g. 320,180")
+      ->check(checkWith(parseFocusPixel, "X,Y"));
+  cmd.add_option(
+         "--sensor", o.sensor,
+         "sensor size WxH in mm or full-frame (36x24), aps-c (23.6x15.6), mft (17.3x13), 1in (13.2x8.8); "
+         "cropped to the image's aspect ratio; default full-frame")
+      ->check(checkWith(parseSensor, "WxH|NAME"));
+  cmd.add_option("--blades", o.blades,
+                 "aperture blades: 0 for a round aperture, else 3..64 (a regular polygon)")
+      ->check(integerIn(0, 64, "0 for a round aperture, else 3 or more") &
+              CLI::Validator(
+                  [](std::string& s) -> std::string {
+                    return s == "1" || s == "2" ? "an aperture needs 0 or at least 3 blades" : "";
+                  },
+                  ""));
+  cmd.add_option("--blade-rotation", o.bladeRotationDegrees,
+                 "rotation of the blade polygon in degrees, e.g. 15")
+      ->check(numberIn(-360.0, 360.0, "degrees"));
+  cmd.add_option("--aperture-mask", o.apertureMask,
+                 "grey-scale image (PNG) over the stop of --camera lens, white transmits: bokeh takes its "
+                 "shape; instead of --blades");
+  cmd.add_option("--focal-length", o.focalLengthMm,
+                 "focal length in mm: without --lens the thin lens's and pinhole's (default: from the glTF "
+                 "camera's field of view); with --lens the design is scaled to it")
+      ->check(numberIn(0.1, 10000.0, "mm"));
+  cmd.add_option("--exposure", o.exposure,
+                 "normalized (an ideal lens records the scene radiance on axis at any f-number; default) or "
+                 "physical (exposure H = E t, 1.0 = ISO 12232 saturation: value = 683 E t ISO / 78)")
+      ->check(CLI::IsMember({"normalized", "physical"}));
+  cmd.add_option("--shutter", o.shutter,
+                 "shutter time in seconds for --exposure physical, e.g. 1/125 (default 1/100)")
+      ->check(checkWith(parseShutter, "SECONDS"));
+  cmd.add_option("--iso", o.iso, "ISO speed for --exposure physical (default 100)")
+      ->check(numberIn(1.0, 1e7, "ISO speed"));
+  cmd.add_option(
+         "--dispersion", o.dispersion,
+         "on (default): when --lens has dispersion data (Abbe numbers), each sample is traced at its own "
+         "wavelength: colour fringes with --camera lens, a focal length per wavelength with thin and "
+         "thick; off: every ray at the d line (587.6 nm)")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--coatings", o.coatings,
+                 "Fresnel losses in the full lens (--camera lens): none (uncoated glass), single (a "
+                 "quarter-wave MgF2 layer at 550 nm) or multi (0.5% reflectance per surface); default: "
+                 "lossless glass, as pbrt")
+      ->check(CLI::IsMember({"none", "single", "multi"}));
+  cmd.add_option("--film", o.film,
+                 "what a pixel records: radiance (the mean radiance along the camera rays, no cos^4, no "
+                 "bellows factor, no exposure scale: pbrt's, Cycles' and Mitsuba's pinhole; the pinhole's "
+                 "default, pinhole only) or irradiance (the physical film, scaled by --exposure; the default "
+                 "of thin, thick and lens)")
+      ->check(CLI::IsMember({"radiance", "irradiance"}));
+}
+
+}  // namespace lensrt

@@ -1,0 +1,25 @@
+#include "app/render_flags.h"
+
+#include "app/option_checks.h"
+
+namespace lensrt {
+
+void addEnvironmentOptions(CLI::App& cmd, EnvironmentArgs& args) {
+  cmd.add_option(
+         "--env", args.environment,
+         "environment light: constant:V or constant:R,G,B radiance in W/(sr m^2), a lat-long "
+         ".exr/.hdr map (centre = -Z, +Y up), or none (the scene's own light alone), e.g. --env constant:1 "
+         "(default: none when the scene's lights and emissive surfaces light it, else a uniform sky of "
+         "radiance 1, with a notice saying why)")
+      ->check([](const std::string& s) { return checkEnvironment(s); });
+  cmd.add_option("--env-rotate", args.rotationDegrees,
+                 "turn the environment about +Y by DEG degrees, counterclockwise seen from above (right-hand "
+                 "rule): at 90 the map's centre moves from -Z to -X; e.g. --env-rotate 90 (default 0)")
+      ->check(numberIn(-360.0, 360.0, "degrees"));
+  cmd.add_option("--env-intensity", args.intensity,
+                 "multiply the environment's radiance by K (constant, map or the default sky), e.g. "
+                 "--env-intensity 0.5 (default 1)")
+      ->check(numberIn(0.0, 1e9, "a radiance scale"));
+}
+
+}  // namespace lensrt

@@ -1,0 +1,32 @@
+#include "cluster/job_on_ranks.h"
+
+#include <chrono>
+
+#include "cluster/distributed_render.h"
+#include "render/progress.h"
+
+namespace lensrt {
+
+RenderJobResult renderOnRanks(const RenderJob& job, const Camera& camera, const RenderSettings& settings,
+                              bool quiet, const Cluster& cluster) {
+  if (cluster.size() == 1) return job.render(camera, settings, quiet);
+  if (!cluster.isMain()) {
+    workForMain(cluster, camera, job.integrator(), settings, [] { return 0; });
+    return {};
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const FilmGeometry& film = camera.film();
+  FilmState state(settings.region.value_or(PixelRegion::wholeFrame(film.width, film.height)), settings.aovs);
+  {
+    Progress progress(state.region().pixelCount() * std::uint64_t(settings.samplesPerPixel),
+                      Progress::styleFor(stderr, quiet));
+    int signal = 0;
+    renderAcrossRanks(cluster, camera, job.integrator(), settings, state, PassControl{}, &progress, signal);
+  }
+  RenderJobResult result;
+  result.output = renderOutput(camera, state);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace lensrt
