@@ -4,12 +4,14 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/vec.h"
 #include "render/film.h"
+#include "scene/scene_file_access.h"
 
 namespace lensrt {
 
@@ -39,6 +41,16 @@ struct EnvironmentArgs {
 };
 void addEnvironmentOptions(CLI::App& command, EnvironmentArgs& args);
 EnvironmentSpec environmentSpec(const EnvironmentArgs& args);
+
+// What the scene's content may make lensrt read and hold (`lensrt render` and
+// `lensrt compare`): --allow-external-files (or LENSRT_ALLOW_EXTERNAL_FILES=1)
+// and --max-texture-memory MIB.
+struct SceneAccessArgs {
+  bool allowExternalFiles = false;
+  std::uint64_t maxTextureMiB = defaultMaxTextureBytes() >> 20;
+};
+void addSceneAccessOptions(CLI::App& command, SceneAccessArgs& args);
+SceneReadLimits sceneReadLimits(const SceneAccessArgs& args);
 
 AovSelection parseAovs(const std::vector<std::string>& names);
 
