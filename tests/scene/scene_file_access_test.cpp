@@ -145,7 +145,13 @@ TEST(SceneFileAccess, FifosAreRefusedWithoutBeingOpened) {
   ASSERT_EQ(::mkfifo((f.scene / "pipe.bin").c_str(), 0600), 0);
   ASSERT_EQ(::mkfifo((f.outside / "pipe.bin").c_str(), 0600), 0);
   fs::create_symlink(f.outside / "pipe.bin", f.scene / "outside-pipe.bin");
-  const std::vector<std::tuple<std::string, SceneReadLimits, std::string, fs::path>> cases = {
+  struct Case {
+    std::string uri;
+    SceneReadLimits limits;
+    std::string message;
+    fs::path fifo;
+  };
+  const std::vector<Case> cases = {
       {"pipe.bin", {}, "URI 'pipe.bin': a FIFO, not a regular file", f.scene / "pipe.bin"},
       {"pipe.bin", allowingExternalFiles(), "URI 'pipe.bin': a FIFO, not a regular file",
        f.scene / "pipe.bin"},
@@ -154,19 +160,19 @@ TEST(SceneFileAccess, FifosAreRefusedWithoutBeingOpened) {
        "URI 'outside-pipe.bin': a symbolic link that leads out of the scene's folder" + kConfined,
        f.outside / "pipe.bin"},
   };
-  for (const auto& [uri, limits, message, fifo] : cases) {
-    const fs::path scene = f.withBuffer(uri);
-    auto load = std::async(std::launch::async, [&] { return errorOf(scene, limits); });
+  for (const Case& c : cases) {
+    const fs::path scene = f.withBuffer(c.uri);
+    auto load = std::async(std::launch::async, [&] { return errorOf(scene, c.limits); });
     if (load.wait_for(std::chrono::seconds(20)) == std::future_status::timeout) {
-      ADD_FAILURE() << uri << ": the load blocked (the FIFO was opened)";
+      ADD_FAILURE() << c.uri << ": the load blocked (the FIFO was opened)";
       // A writer that comes and goes releases each blocked open.
       for (int i = 0; i < 1000 && load.wait_for(std::chrono::milliseconds(10)) == std::future_status::timeout;
            ++i) {
-        const int writer = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+        const int writer = ::open(c.fifo.c_str(), O_WRONLY | O_NONBLOCK);
         if (writer >= 0) ::close(writer);
       }
     }
-    EXPECT_EQ(load.get(), message) << uri;
+    EXPECT_EQ(load.get(), c.message) << c.uri;
   }
 }
 
