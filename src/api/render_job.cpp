@@ -79,8 +79,8 @@ Environment defaultEnvironment(const EnvironmentSpec& spec) {
 
 RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_(options) {
   const std::optional<Resolution>& res = options.resolution;
-  SceneDesc desc =
-      asFlagError("--scene-index", [&] { return loadGltf(options.scene, options.sceneIndex, warnings); });
+  SceneDesc desc = asFlagError(
+      "--scene-index", [&] { return loadGltf(options.scene, options.sceneIndex, warnings, options.limits); });
   const float defaultAspect = float(kDefaultWidth) / float(kDefaultHeight);
   const float aspectGuess = res && res->height > 0 ? float(res->width) / float(res->height) : defaultAspect;
   gltfCamera_ =
@@ -198,7 +198,8 @@ RenderJobResult RenderJob::renderPasses(const Camera& camera, const RenderSettin
 }
 
 ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {
-  if (sceneDigest_.empty()) sceneDigest_ = sceneDigest(options_.scene, options_.environment.file);
+  if (sceneDigest_.empty())
+    sceneDigest_ = sceneDigest(options_.scene, options_.environment.file, options_.limits.allowExternalFiles);
   std::string aovs;
   for (const std::string& c : filmChannels(settings.aovs)) aovs += (aovs.empty() ? "" : ",") + c;
   return {

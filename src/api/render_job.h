@@ -28,7 +28,8 @@ struct SceneOptions {
   std::optional<Resolution> resolution;  // none: 640 wide, height from the camera's aspect
   EnvironmentSpec environment;
   int maxDepth = 8;
-  bool quiet = false;  // no "no lights" warning
+  bool quiet = false;      // no "no lights" warning
+  SceneReadLimits limits;  // what the scene may make lensrt read and hold
 };
 
 struct RenderJobResult {

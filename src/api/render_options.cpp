@@ -106,6 +106,13 @@ EnvironmentSpec environmentSpec(const EnvironmentArgs& args) {
   return spec;
 }
 
+SceneReadLimits sceneReadLimits(const SceneAccessArgs& args) {
+  SceneReadLimits limits;
+  limits.allowExternalFiles = args.allowExternalFiles;
+  limits.maxTextureBytes = args.maxTextureMiB << 20;
+  return limits;
+}
+
 AovSelection parseAovs(const std::vector<std::string>& names) {
   AovSelection a;
   for (const std::string& n : names) {

@@ -3,12 +3,14 @@
 // throws UsageError (exit 2); app/render_flags.h registers the flags.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/vec.h"
 #include "render/film.h"
+#include "scene/scene_file_access.h"
 
 namespace lensrt {
 
@@ -38,6 +40,15 @@ struct EnvironmentArgs {
   double intensity = 1;
 };
 EnvironmentSpec environmentSpec(const EnvironmentArgs& args);
+
+// What the scene's content may make lensrt read and hold (`lensrt render` and
+// `lensrt compare`): --allow-external-files (or LENSRT_ALLOW_EXTERNAL_FILES=1)
+// and --max-texture-memory MIB.
+struct SceneAccessArgs {
+  bool allowExternalFiles = false;
+  std::uint64_t maxTextureMiB = defaultMaxTextureBytes() >> 20;
+};
+SceneReadLimits sceneReadLimits(const SceneAccessArgs& args);
 
 AovSelection parseAovs(const std::vector<std::string>& names);
 

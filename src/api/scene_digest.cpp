@@ -7,10 +7,12 @@
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "core/error.h"
+#include "scene/scene_file_access.h"
 
 namespace lensrt {
 namespace {
@@ -23,11 +25,12 @@ std::string readAll(const fs::path& file) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-// Files a .gltf names by relative URI (buffers, images); data: URIs are in
-// the file already. A .glb or a file that is not JSON contributes itself only:
-// the loader has reported anything wrong with it before we get here.
-std::vector<fs::path> referencedFiles(const fs::path& scene, const std::string& text) {
-  std::vector<fs::path> files;
+// Files a .gltf names by URI (buffers, images), confined as the loader
+// confines them; data: URIs are in the file already. A .glb or a file that is
+// not JSON contributes itself only: the loader has reported anything wrong
+// with it before we get here.
+std::vector<SceneFile> referencedFiles(const SceneFileAccess& access, const std::string& text) {
+  std::vector<SceneFile> files;
   const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
   if (doc.is_discarded() || !doc.is_object()) return files;
   for (const char* section : {"buffers", "images"}) {
@@ -37,9 +40,7 @@ std::vector<fs::path> referencedFiles(const fs::path& scene, const std::string& 
       if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
       const std::string uri = item["uri"].get<std::string>();
       if (uri.rfind("data:", 0) == 0) continue;
-      const fs::path file = scene.parent_path() / uri;
-      std::error_code ec;
-      if (fs::is_regular_file(file, ec)) files.push_back(file);
+      if (std::optional<SceneFile> file = access.resolve(uri)) files.push_back(std::move(*file));
     }
   }
   return files;
@@ -47,7 +48,8 @@ std::vector<fs::path> referencedFiles(const fs::path& scene, const std::string& 
 
 }  // namespace
 
-std::string sceneDigest(const std::string& sceneFile, const std::string& environmentMap) {
+std::string sceneDigest(const std::string& sceneFile, const std::string& environmentMap,
+                        bool allowExternalFiles) {
   const std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx(EVP_MD_CTX_new(), EVP_MD_CTX_free);
   if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1)
     throw InputError(sceneFile, "OpenSSL cannot compute SHA-256");
@@ -58,7 +60,11 @@ std::string sceneDigest(const std::string& sceneFile, const std::string& environ
   };
   const std::string scene = readAll(sceneFile);
   add(sceneFile, scene);
-  for (const fs::path& file : referencedFiles(sceneFile, scene)) add(file, readAll(file));
+  const SceneFileAccess access(sceneFile, allowExternalFiles);
+  for (const SceneFile& file : referencedFiles(access, scene)) {
+    const std::vector<unsigned char> bytes = access.read(file);
+    add(file.named, std::string(bytes.begin(), bytes.end()));
+  }
   if (!environmentMap.empty()) add(environmentMap, readAll(environmentMap));
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;

@@ -9,8 +9,11 @@
 namespace lensrt {
 
 // Hex SHA-256 over each file's name (as given) and content, in a fixed order.
-// `environmentMap` may be empty. Throws InputError when a file cannot be read.
-std::string sceneDigest(const std::string& sceneFile, const std::string& environmentMap);
+// `environmentMap` may be empty. The scene's URIs are resolved as the loader
+// resolves them (SceneFileAccess: its folder only unless `allowExternalFiles`).
+// Throws InputError when a file cannot or may not be read.
+std::string sceneDigest(const std::string& sceneFile, const std::string& environmentMap,
+                        bool allowExternalFiles);
 
 // Hex SHA-256 of `bytes`.
 std::string sha256Hex(std::string_view bytes);

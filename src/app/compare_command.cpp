@@ -50,6 +50,7 @@ struct CompareArgs {
   std::string cameraNode;
   int sceneIndex = -1;
   EnvironmentArgs environment;
+  SceneAccessArgs access;
   int tileSize = 16;
   bool quiet = false;
   CameraOptions camera;
@@ -130,6 +131,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   sceneOptions.environment = environmentSpec(args.environment);
   sceneOptions.maxDepth = args.maxDepth;
   sceneOptions.quiet = args.quiet;
+  sceneOptions.limits = sceneReadLimits(args.access);
   RenderSettings settings;
   settings.samplesPerPixel = args.spp;
   settings.seed = args.seed;
@@ -321,6 +323,7 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("--scene-index", args->sceneIndex, "which glTF scene to render (0-based)")
       ->check(CLI::Range(-1, 1 << 20));
   addEnvironmentOptions(*cmd, args->environment);
+  addSceneAccessOptions(*cmd, args->access);
   cmd->add_option("--tile-size", args->tileSize,
                   "tile size in pixels for scheduling (does not change the images)")
       ->check(CLI::Range(1, 4096))

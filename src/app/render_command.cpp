@@ -42,6 +42,7 @@ struct RenderArgs {
   std::string cameraNode;
   int sceneIndex = -1;
   EnvironmentArgs environment;
+  SceneAccessArgs access;
   std::vector<std::string> aovs;
   int tileSize = 16;
   std::string crop;
@@ -127,6 +128,7 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   sceneOptions.environment = environmentSpec(args.environment);
   sceneOptions.maxDepth = args.maxDepth;
   sceneOptions.quiet = args.quiet;
+  sceneOptions.limits = sceneReadLimits(args.access);
   RenderSettings settings;
   settings.samplesPerPixel = args.spp;
   settings.seed = args.seed;
@@ -306,6 +308,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
          "which glTF scene to render (0-based; default: the file's default scene), e.g. --scene-index 1")
       ->check(integerIn(0, 1 << 20, "0-based"));
   addEnvironmentOptions(*cmd, args->environment);
+  addSceneAccessOptions(*cmd, args->access);
   cmd->add_option(
          "--aov", args->aovs,
          "extra EXR channels, comma separated: depth (depth.Z, metres), normal (normal.X/Y/Z, world), "

@@ -22,4 +22,27 @@ void addEnvironmentOptions(CLI::App& cmd, EnvironmentArgs& args) {
       ->check(numberIn(0.0, 1e9, "a radiance scale"));
 }
 
+void addSceneAccessOptions(CLI::App& cmd, SceneAccessArgs& args) {
+  cmd.add_flag("--allow-external-files", args.allowExternalFiles,
+               "let the scene read files outside its folder (absolute paths, '..', symbolic links out of "
+               "it), naming each one read; only for scenes you trust (default: off, or "
+               "LENSRT_ALLOW_EXTERNAL_FILES=1)")
+      ->envname("LENSRT_ALLOW_EXTERNAL_FILES")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            try {
+              CLI::detail::to_flag_value(text);
+              return "";
+            } catch (const std::exception&) {
+              return "expected 1 (on) or 0 (off), e.g. LENSRT_ALLOW_EXTERNAL_FILES=1, got '" + text + "'";
+            }
+          },
+          ""));
+  cmd.add_option("--max-texture-memory", args.maxTextureMiB,
+                 "MiB the scene's textures may take as held for rendering (16 bytes a texel), e.g. "
+                 "--max-texture-memory 4096 (default: half this machine's memory)")
+      ->check(integerIn<std::uint64_t>(1, std::uint64_t{1} << 40, "MiB"))
+      ->capture_default_str();
+}
+
 }  // namespace lensrt

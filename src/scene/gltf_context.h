@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/warnings.h"
+#include "scene/scene_file_access.h"
 
 namespace lensrt::gltf {
 
@@ -15,6 +16,7 @@ struct Context {
   const tinygltf::Model& model;
   std::string file;  // for messages
   Warnings& warnings;
+  const SceneReadLimits& limits;
 
   [[noreturn]] void fail(const std::string& message) const { throw InputError(file, message); }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -22,6 +23,7 @@
 #include "scene/gltf_materials.h"
 #include "scene/gltf_mesh.h"
 #include "scene/gltf_values.h"
+#include "scene/scene_file_access.h"
 #include "scene/selection_error.h"
 
 namespace lensrt {
@@ -88,38 +90,99 @@ void checkGlbLayout(const std::filesystem::path& file, const std::string& name, 
                                " follow it within the declared length");
 }
 
-// tinygltf's file access for buffer and image URIs, refusing what is not a
-// regular file: a FIFO blocked forever and a directory read as an absurd size
-// ("out of memory"; found trying buffer URIs of a FIFO and of /tmp).
-// tinygltf's own check opens the file, which blocks on a FIFO.
-bool fileExists(const std::string& path, void*) {
-  std::error_code ec;
-  return std::filesystem::exists(path, ec);
+// tinygltf's file access for buffer and image URIs. tinygltf joins the
+// decoded URI to the folder we give it, then tries the working directory:
+// SceneFileAccess decides what may be read, and the working directory never
+// is. A refusal is kept and thrown once tinygltf returns, since tinygltf would
+// only say "File not found" (and goes on after an image).
+class UriReader {
+ public:
+  UriReader(const SceneFileAccess& access, Warnings& warnings)
+      : access_(access), warnings_(warnings), prefix_(access.folder().string()) {
+    if (!prefix_.ends_with('/')) prefix_ += '/';
+  }
+
+  const std::string& folder() const { return prefix_; }
+  const std::optional<InputError>& refusal() const { return refusal_; }
+
+  tinygltf::FsCallbacks callbacks() {
+    return {&UriReader::exists, &UriReader::expand, &UriReader::read, &tinygltf::WriteWholeFile, this};
+  }
+
+ private:
+  static std::string expand(const std::string& path, void*) { return path; }  // no ~ or $VAR
+
+  static bool exists(const std::string& path, void* self) {
+    auto& r = *static_cast<UriReader*>(self);
+    if (!path.starts_with(r.prefix_)) return false;  // tinygltf's second try, in the working directory
+    const std::string uri = path.substr(r.prefix_.size());
+    // A data: URI tinygltf cannot decode (another media type) names no file.
+    if (uri.starts_with("data:")) return false;
+    try {
+      const std::optional<SceneFile> file = r.access_.resolveDecoded(uri);
+      if (file) r.checked_.insert_or_assign(path, *file);
+      return file.has_value();
+    } catch (const InputError& e) {
+      if (!r.refusal_) r.refusal_ = e;
+      return false;
+    }
+  }
+
+  static bool read(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* self) {
+    auto& r = *static_cast<UriReader*>(self);
+    const auto it = r.checked_.find(path);
+    if (it == r.checked_.end()) {
+      if (err) *err += "not checked\n";
+      return false;
+    }
+    if (it->second.external)
+      r.warnings_.warn("reading " + it->second.resolved.string() +
+                       ", outside the scene's folder (--allow-external-files)");
+    try {
+      *out = r.access_.read(it->second);
+      return true;
+    } catch (const InputError& e) {
+      if (err) *err += e.message() + "\n";
+      return false;
+    }
+  }
+
+  const SceneFileAccess& access_;
+  Warnings& warnings_;
+  std::string prefix_;  // the scene's folder and '/', as tinygltf joins URIs to it
+  std::map<std::string, SceneFile> checked_;
+  std::optional<InputError> refusal_;
+};
+
+std::vector<unsigned char> readSceneFile(const std::filesystem::path& file, const std::string& name,
+                                         std::uint64_t fileSize) {
+  // tinygltf takes the length as an unsigned int.
+  if (fileSize > std::numeric_limits<unsigned int>::max())
+    throw InputError(name, "the file is larger than 4 GiB");
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(fileSize));
+  std::ifstream in(file, std::ios::binary);
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (static_cast<std::uint64_t>(in.gcount()) != fileSize) throw InputError(name, "cannot read the file");
+  return bytes;
 }
 
-bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    if (err) *err += "not a regular file\n";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!in || ec) {
-    if (err) *err += "cannot read the file\n";
-    return false;
-  }
-  if (size == 0) {
-    if (err) *err += "file is empty\n";
-    return false;
-  }
-  out->resize(static_cast<std::size_t>(size));
-  in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size));
-  if (static_cast<std::uintmax_t>(in.gcount()) != size) {
-    if (err) *err += "cannot read the file\n";
-    return false;
-  }
-  return true;
+// Each data: URI decoded, against the limit. tinygltf has decoded them by now,
+// but the text they came from was as large, so the memory is bounded by the
+// scene file's size.
+void checkDataUris(const tinygltf::Model& model, const std::string& name, const SceneReadLimits& limits) {
+  const auto check = [&](const std::string& what, std::size_t bytes) {
+    if (bytes > limits.maxDataUriBytes)
+      throw InputError(name, what + ": its data: URI decodes to " + std::to_string(bytes) +
+                                 " bytes, more than the " + std::to_string(limits.maxDataUriBytes) +
+                                 " a data: URI may hold");
+  };
+  for (std::size_t i = 0; i < model.buffers.size(); ++i)
+    if (model.buffers[i].uri.starts_with("data:"))
+      check("buffer " + std::to_string(i), model.buffers[i].data.size());
+  // deferImageDecoding keeps the bytes of URI images; only external ones keep their URI.
+  for (std::size_t i = 0; i < model.images.size(); ++i)
+    if (model.images[i].as_is && model.images[i].uri.empty())
+      check("image " + std::to_string(i), model.images[i].image.size());
 }
 
 // A .gltf is JSON: an object. Anything else (an image, a binary blob, a
@@ -182,7 +245,8 @@ bool isGlb(const std::filesystem::path& file, const std::string& name, std::uint
   throw InputError(name, err);
 }
 
-tinygltf::Model parse(const std::filesystem::path& file, const std::string& name, Warnings& warnings) {
+tinygltf::Model parse(const std::filesystem::path& file, const std::string& name, Warnings& warnings,
+                      const SceneReadLimits& limits) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(name, "file not found");
   if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name, "not a regular file");
@@ -191,14 +255,20 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
   if (fileSize == 0) throw InputError(name, "file is empty");
   const bool binary = isGlb(file, name, fileSize);
   if (!binary) checkLooksLikeJson(file, name);
+  const SceneFileAccess access(file, limits.allowExternalFiles);
+  UriReader uris(access, warnings);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(gltf::deferImageDecoding, nullptr);
-  loader.SetFsCallbacks(
-      {&fileExists, &tinygltf::ExpandFilePath, &readRegularFile, &tinygltf::WriteWholeFile, nullptr});
+  loader.SetFsCallbacks(uris.callbacks());
+  const std::vector<unsigned char> bytes = readSceneFile(file, name, fileSize);
+  const auto size = static_cast<unsigned int>(bytes.size());
   tinygltf::Model model;
   std::string err, warn;
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
-                         : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, uris.folder())
+             : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                          size, uris.folder());
+  if (uris.refusal()) throw *uris.refusal();
   // Image problems are reported once, in our words, when a material uses the
   // image (gltf_materials.cpp); drop tinygltf's own lines about them.
   const auto aboutImage = [&](const std::string& line) {
@@ -212,6 +282,7 @@ tinygltf::Model parse(const std::filesystem::path& file, const std::string& name
   for (std::string line; std::getline(lines, line);)
     if (!oneLine(line).empty() && !aboutImage(line)) warnings.warn(oneLine(line));
   if (!ok) throwParseError(name, err.empty() ? "cannot parse the glTF file" : oneLine(err));
+  checkDataUris(model, name, limits);
   return model;
 }
 
@@ -507,10 +578,11 @@ void checkRenderable(const Context& ctx, const SceneDesc& desc, const gltf::Mesh
 
 }  // namespace
 
-SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings) {
+SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
+                   const SceneReadLimits& limits) {
   const std::string name = file.string();
-  const tinygltf::Model model = parse(file, name, warnings);
-  const Context ctx{model, name, warnings};
+  const tinygltf::Model model = parse(file, name, warnings, limits);
+  const Context ctx{model, name, warnings, limits};
   checkVersion(ctx);
   checkExtensions(ctx);
   SceneDesc desc;

@@ -15,6 +15,7 @@
 
 #include "core/warnings.h"
 #include "scene/scene_desc.h"
+#include "scene/scene_file_access.h"
 
 namespace lensrt {
 
@@ -22,7 +23,11 @@ namespace lensrt {
 // 0), otherwise a 0-based index into the file's scenes. Throws InputError(file,
 // one-line message) for unreadable or broken input, and when the scene has no
 // non-degenerate triangle to render; SelectionError (an InputError) when the
-// file has no scene `sceneIndex`.
-SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings);
+// file has no scene `sceneIndex`. `limits` says what the file may make the
+// loader read and hold: by default only files in its folder
+// (scene_file_access.h); a URI refused, a data: URI or a texture over its
+// limit is an InputError naming it.
+SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
+                   const SceneReadLimits& limits = {});
 
 }  // namespace lensrt

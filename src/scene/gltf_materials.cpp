@@ -19,6 +19,17 @@ namespace {
 constexpr int kMaxMegatexels = 128;
 constexpr double kMaxTexels = kMaxMegatexels * 1048576.0;
 
+// Textures are held as 4 floats a texel.
+std::uint64_t texelBytes(std::uint64_t width, std::uint64_t height) {
+  return width * height * sizeof(Vec4f);
+}
+
+std::string bytesText(std::uint64_t bytes) {
+  constexpr std::uint64_t kMiB = 1 << 20;
+  if (bytes < kMiB) return std::to_string(bytes) + " bytes";
+  return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
+}
+
 std::uint32_t bigEndian32(const unsigned char* b) {
   return (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | b[3];
 }
@@ -110,18 +121,36 @@ class TextureLoader {
                                       ? image.uri
                                       : (image.name.empty() ? "#" + std::to_string(gt.source) : image.name);
     std::string why;
-    const std::optional<Pixels> pixels = decode(image, why);
+    const std::optional<Pixels> pixels = decode(image, imageName, why);
     if (!pixels) {
       ctx_.warnings.warn("texture image '" + imageName + "' " + why + "; using the material factor only");
       return std::nullopt;
     }
     Texture tex = toTexture(*pixels, srgb);
+    textureBytes_ += texelBytes(tex.width, tex.height);
     tex.name = imageName;
     applySampler(gt.sampler, tex);
     return tex;
   }
 
-  std::optional<Pixels> decode(const tinygltf::Image& image, std::string& why) const {
+  // The texture limits, before decoding allocates for what the header
+  // declares (and again after, for formats whose header is not read here):
+  // a small untrusted file can declare a huge image.
+  void checkLimits(const std::string& imageName, std::uint32_t width, std::uint32_t height,
+                   const char* declares) const {
+    if (double(width) * double(height) > kMaxTexels)
+      ctx_.fail("texture image '" + imageName + "' " + declares + " " + std::to_string(width) + "x" +
+                std::to_string(height) + " texels, more than the " + std::to_string(kMaxMegatexels) +
+                " Mtexels a texture may have");
+    const std::uint64_t total = textureBytes_ + texelBytes(width, height);
+    if (total > ctx_.limits.maxTextureBytes)
+      ctx_.fail("texture image '" + imageName + "' (" + std::to_string(width) + "x" + std::to_string(height) +
+                ") brings the textures to " + bytesText(total) + ", more than the " +
+                bytesText(ctx_.limits.maxTextureBytes) + " --max-texture-memory allows");
+  }
+
+  std::optional<Pixels> decode(const tinygltf::Image& image, const std::string& imageName,
+                               std::string& why) const {
     const unsigned char* bytes = nullptr;
     std::size_t size = 0;
     if (image.as_is && !image.image.empty()) {
@@ -153,12 +182,8 @@ class TextureLoader {
       why = "is empty or too large";
       return std::nullopt;
     }
-    if (const std::optional<std::pair<std::uint32_t, std::uint32_t>> dims = declaredSize(bytes, size);
-        dims && double(dims->first) * double(dims->second) > kMaxTexels) {
-      why = "is " + std::to_string(dims->first) + "x" + std::to_string(dims->second) +
-            " texels, more than the " + std::to_string(kMaxMegatexels) + " Mtexels a texture may have";
-      return std::nullopt;
-    }
+    if (const std::optional<std::pair<std::uint32_t, std::uint32_t>> dims = declaredSize(bytes, size))
+      checkLimits(imageName, dims->first, dims->second, "declares");
     tinygltf::Image decoded;
     std::string err, warn;
     // nullptr options: tinygltf's default, which expands to 4 channels.
@@ -175,6 +200,7 @@ class TextureLoader {
       why = "decoded to an unexpected pixel format";
       return std::nullopt;
     }
+    checkLimits(imageName, std::uint32_t(p.width), std::uint32_t(p.height), "has");
     return p;
   }
 
@@ -289,6 +315,7 @@ class TextureLoader {
 
   const Context& ctx_;
   SceneDesc& desc_;
+  std::uint64_t textureBytes_ = 0;             // held by the textures loaded so far
   std::map<std::pair<int, bool>, int> cache_;  // (glTF texture, sRGB) -> desc texture or -1
 };
 

@@ -6,6 +6,7 @@ import copy
 import json
 import os
 import struct
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TRI = [0, 0, 0, 1, 0, 0, 0, 1, 0]
@@ -224,3 +225,29 @@ write("sampler-invalid-modes.gltf", d)
 d = textured({"uri": "data:image/png;base64," + PNG_2x1})
 d["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 1  # the SCALAR index accessor
 write("color-wrong-type.gltf", d)
+
+# Untrusted scenes (issue 27): a scene reads only files in its own folder;
+# each of these URIs is refused before anything is opened.
+for name, uri in [("untrusted-absolute-buffer.gltf", "/etc/passwd"),
+                  ("untrusted-dotdot-buffer.gltf", "../../../../../../../../etc/passwd"),
+                  ("untrusted-percent-dotdot-buffer.gltf", "%2E%2E/%2e%2e/%2E%2E/etc/passwd"),
+                  ("untrusted-file-uri-buffer.gltf", "file:///etc/passwd"),
+                  ("untrusted-dev-zero-buffer.gltf", "/dev/zero")]:
+    d = copy.deepcopy(good)
+    d["buffers"][0]["uri"] = uri
+    write(name, d)
+write("untrusted-absolute-image.gltf", textured({"uri": "/etc/hostname"}))
+
+
+def png_header(width, height):
+    """A PNG signature and IHDR chunk declaring width x height RGBA, then IEND: no pixels."""
+    ihdr = b"IHDR" + struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
+    chunk = struct.pack(">I", 13) + ihdr + struct.pack(">I", zlib.crc32(ihdr))
+    return b"\x89PNG\r\n\x1a\n" + chunk + struct.pack(">I", 0) + b"IEND" + struct.pack(">I", zlib.crc32(b"IEND"))
+
+
+for w, h in [(60000, 60000), (512, 512)]:
+    with open(os.path.join(HERE, "header-only-%dx%d.png" % (w, h)), "wb") as f:
+        f.write(png_header(w, h))
+write("texture-60000x60000.gltf", textured({"uri": "header-only-60000x60000.png"}))
+write("texture-512x512.gltf", textured({"uri": "header-only-512x512.png"}))
