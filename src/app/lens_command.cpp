@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "api/lens_info.h"
 #include "api/lens_loading.h"
 #include "app/lens_subcommands.h"
 #include "app/option_checks.h"
@@ -68,11 +69,6 @@ double parseFocusMetres(const std::string& text) {
   throw CLI::ValidationError("--focus", "expected a distance in metres > 0 or 'inf', got '" + text + "'");
 }
 
-// JSON has no infinity: distances at infinity are null.
-nlohmann::json finiteOrNull(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
 std::string metresText(double mm) {
   return std::isfinite(mm) ? fmt::format("{:.4g} m", mm / 1000.0) : "infinity";
 }
@@ -100,88 +96,23 @@ int runInfo(const InfoOptions& o) {
 
 int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor& sensor, double focusM,
               Warnings& warnings, const std::vector<std::string>& warningList) {
-  const double widest = computeParaxial(design).fNumber;
-  const LensSystem lens(o.fNumber ? stopDown(design, *o.fNumber, warnings) : design);
-  const ParaxialData& p = lens.paraxial();
-
-  const double focusMm = focusM * 1000.0;
-  const double filmDistance = focusFilmDistance(lens, focusMm);
-  const Conjugate conj = paraxialConjugate(p, focusMm);
-  const double halfDiagonal = std::hypot(sensor.width, sensor.height) / 2.0;
-  const FieldOfView fov = fieldOfView(conj.imageDistance, sensor.width, sensor.height);
-  // Circle of confusion: the common diagonal / 1500 rule (0.029 mm on full frame).
-  const double coc = o.circleOfConfusionMm.value_or(2.0 * halfDiagonal / 1500.0);
-  // DoF formulas measure from the front principal plane; report from the entrance pupil.
-  const double hToPupil = p.entrancePupilZ - p.frontPrincipalZ;
-  const double hyperfocal = hyperfocalDistance(p.efl, p.fNumber, coc) + hToPupil;
-  const DepthOfField dof = std::isinf(focusMm)
-                               ? DepthOfField{hyperfocal, kInfinity}
-                               : depthOfField(p.efl, p.fNumber, coc, conj.objectDistanceFromH);
-  // Focused at infinity the near limit is f^2 / (N c) (the seed's D_N as s -> infinity).
-  const double nearMm =
-      std::isinf(focusMm) ? p.efl * p.efl / (p.fNumber * coc) + hToPupil : dof.nearLimit + hToPupil;
-  const double farMm = dof.farLimit + hToPupil;
-
-  const ExitPupilBounds bounds(lens, lens.rearZ() + filmDistance, halfDiagonal);
-  const PupilEfficiency eff = measurePupilEfficiency(lens, bounds, sensor.width, sensor.height, 20000);
-  const LensPrescription& rx = lens.prescription();
-  // Chromatic aberration (0 without Abbe numbers): lateral at the half diagonal.
-  const double axialColor = axialColorMm(rx);
-  const std::optional<LateralColor> lateral = lateralColor(lens, halfDiagonal);
-  const Coating coating = parseCoating(o.coatings).value_or(Coating::None);
-  const double transmittance = axialTransmittance(LensSystem(rx, coating));
-
+  LensInfoSettings settings;
+  settings.sensorWidthMm = sensor.width;
+  settings.sensorHeightMm = sensor.height;
+  settings.fNumber = o.fNumber;
+  settings.focusMetres = focusM;
+  settings.circleOfConfusionMm = o.circleOfConfusionMm;
+  settings.coating = parseCoating(o.coatings).value_or(Coating::None);
+  const LensInfo info = lensInfo(design, settings, warnings);
   if (o.json) {
-    nlohmann::json j;
-    j["name"] = rx.name;
-    j["description"] = rx.description;
-    j["source"] = rx.source;
-    j["file"] = rx.file;
-    j["nominal_focal_length_mm"] =
-        finiteOrNull(rx.nominalFocalLengthMm > 0 ? rx.nominalFocalLengthMm : kInfinity);
-    j["surfaces"] = rx.surfaces.size();
-    j["aspheric_surfaces"] = std::count_if(rx.surfaces.begin(), rx.surfaces.end(),
-                                           [](const Surface& s) { return s.isAspheric(); });
-    j["length_mm"] = p.lastVertexZ;
-    j["efl_mm"] = p.efl;
-    j["bfl_mm"] = p.bfl;
-    j["ffl_mm"] = p.ffl;
-    j["front_focal_point_mm"] = p.frontFocalZ;
-    j["rear_focal_point_mm"] = p.rearFocalZ;
-    j["front_principal_plane_mm"] = p.frontPrincipalZ;
-    j["rear_principal_plane_mm"] = p.rearPrincipalZ;
-    j["front_nodal_point_mm"] = p.frontPrincipalZ;
-    j["rear_nodal_point_mm"] = p.rearPrincipalZ;
-    j["aperture_stop"] = {
-        {"surface", p.stopIndex + 1}, {"position_mm", p.stopZ}, {"diameter_mm", p.stopDiameter}};
-    j["entrance_pupil_pos_mm"] = p.entrancePupilZ;
-    j["entrance_pupil_diameter_mm"] = p.entrancePupilDiameter;
-    j["exit_pupil_pos_mm"] = p.exitPupilZ;
-    j["exit_pupil_diameter_mm"] = p.exitPupilDiameter;
-    j["f_number"] = p.fNumber;
-    j["widest_f_number"] = widest;
-    j["sensor_mm"] = {{"width", sensor.width}, {"height", sensor.height}};
-    j["fov_deg"] = {
-        {"diagonal", fov.diagonalDeg}, {"horizontal", fov.horizontalDeg}, {"vertical", fov.verticalDeg}};
-    j["focus_distance_m"] = finiteOrNull(focusM);
-    j["film_distance_mm"] = filmDistance;
-    j["paraxial_film_distance_mm"] = conj.filmDistance;
-    j["image_distance_mm"] = conj.imageDistance;
-    j["magnification"] = conj.magnification;
-    j["closest_focus_m"] = closestFocusDistanceMm(lens) / 1000.0;
-    j["circle_of_confusion_mm"] = coc;
-    j["hyperfocal_distance_m"] = hyperfocal / 1000.0;
-    j["depth_of_field_m"] = {{"near", finiteOrNull(nearMm / 1000.0)}, {"far", finiteOrNull(farMm / 1000.0)}};
-    j["exit_pupil_efficiency"] = eff.efficiency();
-    j["dispersion_data"] = hasDispersion(rx);
-    j["axial_color_mm"] = axialColor;
-    j["lateral_color_um"] = lateral ? nlohmann::json(lateral->um()) : nlohmann::json(nullptr);
-    j["coatings"] = coatingName(coating);
-    j["axial_transmittance"] = transmittance;
-    j["warnings"] = warningList;
-    std::cout << j.dump(2) << "\n";
+    std::cout << lensInfoJson(info, warningList).dump(2) << "\n";
     return 0;
   }
+  const LensPrescription& rx = info.lens.prescription();
+  const ParaxialData& p = info.lens.paraxial();
+  const Conjugate& conj = info.conjugate;
+  const FieldOfView& fov = info.fov;
+  const double focusMm = focusM * 1000.0;
   fmt::print("{}  ({})\n", rx.name, rx.file);
   if (!rx.description.empty()) fmt::print("  {}\n", rx.description);
   if (!rx.source.empty()) fmt::print("  source: {}\n", rx.source);
@@ -200,28 +131,30 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
   fmt::print("  entrance pupil        at {:.3f}, diameter {:.3f} mm\n", p.entrancePupilZ,
              p.entrancePupilDiameter);
   fmt::print("  exit pupil            at {:.3f}, diameter {:.3f} mm\n", p.exitPupilZ, p.exitPupilDiameter);
-  fmt::print("  f-number              f/{:.3g}  (widest f/{:.3g})\n", p.fNumber, widest);
+  fmt::print("  f-number              f/{:.3g}  (widest f/{:.3g})\n", p.fNumber, info.widestFNumber);
   fmt::print("Sensor {:g} x {:g} mm, focused at {} from the entrance pupil:\n", sensor.width, sensor.height,
              metresText(focusMm));
   fmt::print("  film distance         {:.4f} mm behind the last vertex (paraxial estimate {:.4f})\n",
-             filmDistance, conj.filmDistance);
+             info.filmDistanceMm, conj.filmDistance);
   fmt::print("  magnification         {:.5g}   image distance from H' {:.3f} mm\n", conj.magnification,
              conj.imageDistance);
   fmt::print("  field of view         {:.2f} deg diagonal, {:.2f} horizontal, {:.2f} vertical\n",
              fov.diagonalDeg, fov.horizontalDeg, fov.verticalDeg);
-  fmt::print("  closest focus         {}\n", metresText(closestFocusDistanceMm(lens)));
-  fmt::print("  hyperfocal distance   {}  (circle of confusion {:.4f} mm)\n", metresText(hyperfocal), coc);
-  fmt::print("  depth of field        {} to {}\n", metresText(nearMm), metresText(farMm));
+  fmt::print("  closest focus         {}\n", metresText(info.closestFocusMm));
+  fmt::print("  hyperfocal distance   {}  (circle of confusion {:.4f} mm)\n", metresText(info.hyperfocalMm),
+             info.circleOfConfusionMm);
+  fmt::print("  depth of field        {} to {}\n", metresText(info.nearMm), metresText(info.farMm));
   fmt::print("  exit pupil efficiency {:.1f}% of rays sampled from the pupil bounds pass\n",
-             100.0 * eff.efficiency());
+             100.0 * info.exitPupilEfficiency);
   if (hasDispersion(rx))
     fmt::print(
         "  chromatic aberration  axial {:.4f} mm (BFL at C minus F), lateral {} (F minus C at {:.2f} mm)\n",
-        axialColor, lateral ? fmt::format("{:.2f} um", lateral->um()) : "n/a", halfDiagonal);
+        info.axialColorMm, info.lateralColor ? fmt::format("{:.2f} um", info.lateralColor->um()) : "n/a",
+        info.halfDiagonalMm());
   else
     fmt::print("  chromatic aberration  none (no Abbe numbers or Sellmeier coefficients)\n");
   fmt::print("  axial transmittance   {:.1f}% of an axial bundle at the d line (--coatings {})\n",
-             100.0 * transmittance, coatingName(coating));
+             100.0 * info.axialTransmittance, coatingName(settings.coating));
   return 0;
 }
 
