@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/command.h"
+#include "app/option_checks.h"
 #include "core/error.h"
 #include "image/heatmap.h"
 #include "image/image_diff.h"
@@ -253,28 +254,34 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
   auto& t = o->thresholds;
   sub->add_option("A", o->fileA, "First image")->required();
   sub->add_option("B", o->fileB, "Second image")->required();
-  const auto nonNegative = CLI::NonNegativeNumber;
-  sub->add_option("--fail", t.fail, "Failure threshold on |A-B|")->capture_default_str()->check(nonNegative);
+  // Every check names its range in a few digits (CLI11's NonNegativeNumber
+  // spelled out the largest double), and the thresholds whose default is inf
+  // take inf.
+  const auto absolute = numberFrom(0, "|A-B|");
+  const auto relative = numberFrom(0, "|A-B|/((|A|+|B|)/2)");
+  const auto anyValue = numberFrom(0, "|A-B| of any one value", false, true);
+  const auto percent = numberIn(0, 100, "percent of the pixels");
+  sub->add_option("--fail", t.fail, "Failure threshold on |A-B|")->capture_default_str()->check(absolute);
   sub->add_option("--fail-relative", t.failRelative, "Failure threshold on |A-B|/((|A|+|B|)/2)")
       ->capture_default_str()
-      ->check(nonNegative);
+      ->check(relative);
   sub->add_option("--fail-percent", t.failPercent, "Percentage of pixels allowed to fail")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(percent);
   sub->add_option("--hard-fail", t.hardFail, "Fail if any value's |A-B| exceeds this (default: inf)")
-      ->check(nonNegative);
-  sub->add_option("--warn", t.warn, "Warning threshold on |A-B|")->capture_default_str()->check(nonNegative);
+      ->check(anyValue);
+  sub->add_option("--warn", t.warn, "Warning threshold on |A-B|")->capture_default_str()->check(absolute);
   sub->add_option("--warn-relative", t.warnRelative, "Warning threshold on |A-B|/((|A|+|B|)/2)")
       ->capture_default_str()
-      ->check(nonNegative);
+      ->check(relative);
   sub->add_option("--warn-percent", t.warnPercent, "Percentage of pixels allowed to warn")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(percent);
   sub->add_option("--hard-warn", t.hardWarn, "Warn if any value's |A-B| exceeds this (default: inf)")
-      ->check(nonNegative);
+      ->check(anyValue);
   sub->add_option("--relative-floor", t.relativeFloor, "Floor of the mean relative error's denominator")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(numberFrom(0, "a pixel value", true));
   sub->add_option(
          "--heatmap", o->heatmap,
          "Write a false-colour map of the per-pixel max |A-B| (noise-aware: max |t|) with a labelled "
@@ -287,21 +294,21 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
   sub->add_option("--heatmap-max", o->heatmapMax,
                   "Value at the top of the heatmap scale (default: the max error; noise-aware: twice the |t| "
                   "threshold)")
-      ->check(nonNegative);
+      ->check(numberFrom(0, "0 for the default"));
   sub->add_flag("--noise-aware", o->noiseAware,
                 "Judge by per-pixel t-tests against the variance AOVs (see above)");
   sub->add_option("--pixel-alpha", o->noise.pixelFalseAlarmRate, "Noise-aware: per-pixel false-alarm rate")
       ->capture_default_str()
-      ->check(CLI::Range(1e-12, 0.5));
+      ->check(numberIn(1e-12, 0.5, "a probability"));
   sub->add_option("--image-alpha", o->noise.imageFalseAlarmRate, "Noise-aware: image-level false-alarm rate")
       ->capture_default_str()
-      ->check(CLI::Range(1e-12, 0.5));
+      ->check(numberIn(1e-12, 0.5, "a probability"));
   sub->add_option("--variance-floor", o->noise.relativeFloor,
                   "Noise-aware: standard-deviation floor as a fraction of the pixel value")
       ->capture_default_str()
-      ->check(nonNegative);
+      ->check(numberFrom(0, "a fraction of the pixel value"));
   sub->add_option("--spp", o->spp, "Noise-aware: samples per pixel of both (default: lensrt:spp metadata)")
-      ->check(CLI::PositiveNumber);
+      ->check(integerIn(1, 1 << 24, "samples per pixel"));
   sub->add_flag("--json", o->json, "Print all figures as JSON");
   return [o]() { return runDiff(*o); };
 }

@@ -75,4 +75,25 @@ CLI::Validator checkWith(Parse parse, const std::string& description) {
       description);
 }
 
+// A decimal number >= 0 (or > 0 when `positive`); with `infinity`, also
+// "inf" or "infinity" for no limit. CLI11's NonNegativeNumber refuses inf and
+// names its bound, the largest double, in 309 digits.
+inline CLI::Validator numberFrom(double lo, const std::string& what, bool positive = false,
+                                 bool infinity = false) {
+  const std::string wanted =
+      fmt::format("a number {} {:g}{}", positive ? ">" : ">=", lo, infinity ? " or inf" : "");
+  const std::string meaning = what.empty() ? "" : " (" + what + ")";
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0;
+        // from_chars reads "inf" and "infinity" in any case, as strtod does.
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc() && end == text.data() + text.size() &&
+            (std::isfinite(v) || (infinity && v > 0)) && (positive ? v > lo : v >= lo))
+          return "";
+        return "expected " + wanted + meaning + ", got '" + text + "'";
+      },
+      infinity ? "NUMBER|inf" : "NUMBER");
+}
+
 }  // namespace lensrt

@@ -38,6 +38,25 @@ TEST_F(DiffCommand, ExitStatusesFollowIdiff) {
   EXPECT_EQ(status(shellQuote(a) + " " + shellQuote(b) + " --fail-percent 2.5 --warn-percent 2.5"), 0);
 }
 
+// The thresholds whose default is inf take inf (the README's example spells
+// the defaults out); a bad value's message names the range in a few digits.
+TEST_F(DiffCommand, ThresholdsTakeInfAndNameTheirRangeBriefly) {
+  const std::string ab = shellQuote(a) + " " + shellQuote(b);
+  for (const char* v : {"inf", "infinity", "Inf"}) {
+    EXPECT_EQ(status(ab + " --fail 0.1 --warn 0.1 --hard-fail " + v + " --hard-warn " + v), 0) << v;
+    // --hard-fail inf cannot fail; a finite one below the error does.
+  }
+  EXPECT_EQ(status(ab + " --fail 0.1 --hard-fail 0.001"), 2);
+  const auto bad = runCommand(shellQuote(LENSRT_BINARY) + " diff " + ab + " --hard-fail -1 2>&1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("--hard-fail: expected a number >= 0 or inf"), std::string::npos) << bad.output;
+  EXPECT_LT(bad.output.size(), 200u) << bad.output;
+  const auto notInf = runCommand(shellQuote(LENSRT_BINARY) + " diff " + ab + " --fail inf 2>&1");
+  EXPECT_EQ(notInf.status, 2) << notInf.output;  // --fail's default is finite: no inf
+  EXPECT_NE(notInf.output.find("--fail: expected a number >= 0 (|A-B|), got 'inf'"), std::string::npos)
+      << notInf.output;
+}
+
 TEST_F(DiffCommand, IncomparableAndUnreadable) {
   const std::string small = (dir / "small.exr").string();
   writeImage(small, test::constantImage(4, 6, {"R", "G", "B"}, 0.5f), {});
