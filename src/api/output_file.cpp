@@ -59,7 +59,17 @@ void probeDirectory(const fs::path& out, const fs::path& dir) {
 
 }  // namespace
 
-void checkOutputFile(const fs::path& out) {
+std::optional<fs::path> createFolderFor(const fs::path& file) {
+  const fs::path dir = directoryOf(file);
+  std::error_code ec;
+  if (fs::exists(dir, ec)) return std::nullopt;
+  // A dangling symbolic link or a file on the way is create_directories' error.
+  if (!fs::create_directories(dir, ec) && ec)
+    throw InputError(file.string(), "cannot create the folder " + dir.string() + ": " + ec.message());
+  return dir;
+}
+
+std::optional<fs::path> checkOutputFile(const fs::path& out) {
   std::error_code ec;
   if (fs::is_directory(out, ec))
     throw InputError(out.string(), "is a directory (-o takes an image file name, e.g. -o out/render.exr)");
@@ -68,14 +78,14 @@ void checkOutputFile(const fs::path& out) {
         "-o", (out.extension().empty() ? "'" + out.string() + "' has no image extension"
                                        : "unknown image extension '" + out.extension().string() + "'") +
                   " (use .exr for the full result, .png or .jpg for a preview)");
+  const std::optional<fs::path> created = createFolderFor(out);
   const fs::path dir = directoryOf(out);
-  if (!fs::exists(dir, ec))
-    throw InputError(out.string(), "the output directory " + dir.string() + " does not exist");
   if (!fs::is_directory(dir, ec)) throw InputError(out.string(), dir.string() + " is not a directory");
   if (::access(dir.c_str(), W_OK) != 0)
     throw InputError(out.string(), "the output directory " + dir.string() + " is not writable");
   probeDirectory(out, dir);
   if (diskFull(dir)) throw InputError(out.string(), "no space left on the disk holding " + dir.string());
+  return created;
 }
 
 void writeOutputImage(const fs::path& out, const Image& image, const ImageMetadata& metadata) {

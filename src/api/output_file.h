@@ -4,17 +4,25 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 #include "image/image.h"
 
 namespace lensrt {
 
-// Throws UsageError (exit 2) for a name that is no image file, and
+// Creates the folder that will hold `file` and its missing parents (every
+// command that writes does: -o parts/3.exr makes parts/). Returns that folder
+// when it had to be made, so the command can say so once; nullopt when it
+// was there. Throws InputError(file, why) when it cannot be made.
+std::optional<std::filesystem::path> createFolderFor(const std::filesystem::path& file);
+
+// Creates the output's folder (createFolderFor, returned), then throws
+// UsageError (exit 2) for a name that is no image file, and
 // InputError (exit 1) when the file cannot be created there: the directory is
 // missing, not a directory, not writable (checked by creating and removing a
 // probe file, so read-only mounts, /proc and /sys are caught even for root),
 // or its disk is full.
-void checkOutputFile(const std::filesystem::path& out);
+std::optional<std::filesystem::path> checkOutputFile(const std::filesystem::path& out);
 
 // writeImage, with a failure reported against `out` (a full disk as such).
 void writeOutputImage(const std::filesystem::path& out, const Image& image, const ImageMetadata& metadata);

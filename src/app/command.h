@@ -2,8 +2,13 @@
 // on the main CLI11 app and returns the action to run when it is chosen.
 #pragma once
 
+#include <fmt/core.h>
+
 #include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace lensrt {
@@ -18,6 +23,12 @@ struct CommandContext {
 // Returns the process exit status. Bad input is reported by throwing
 // InputError; main() prints it as one line and exits 1.
 using CommandAction = std::function<int()>;
+
+// One line when a command made the folder its output goes to
+// (api/output_file.h: createFolderFor, checkOutputFile).
+inline void noteCreatedFolder(const std::optional<std::filesystem::path>& folder, bool quiet) {
+  if (folder && !quiet) fmt::print(stderr, "lensrt: created folder {}\n", folder->string());
+}
 
 CommandAction addRenderCommand(CLI::App& app, const CommandContext& context);
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context);

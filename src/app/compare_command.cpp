@@ -60,19 +60,16 @@ nlohmann::json numberOrNull(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-// DIR may be new, but its parent must exist: a typo should not create a tree.
-std::filesystem::path prepareOutputDir(const std::string& text) {
+// DIR and its missing parents are created, as every command's output folder is.
+std::filesystem::path prepareOutputDir(const std::string& text, bool quiet) {
   const std::filesystem::path dir(text);
   std::error_code ec;
   if (std::filesystem::exists(dir, ec)) {
     if (!std::filesystem::is_directory(dir, ec)) throw InputError(text, "exists and is not a directory");
   } else {
-    std::filesystem::path parent = dir.parent_path();
-    if (parent.empty()) parent = ".";
-    if (!std::filesystem::is_directory(parent, ec))
-      throw InputError(text, "the parent directory " + parent.string() + " does not exist");
-    if (!std::filesystem::create_directory(dir, ec) && ec)
-      throw InputError(text, "cannot create the directory: " + ec.message());
+    if (!std::filesystem::create_directories(dir, ec) && ec)
+      throw InputError(text, "cannot create the folder: " + ec.message());
+    noteCreatedFolder(dir, quiet);
   }
   if (access(dir.c_str(), W_OK) != 0) throw InputError(text, "the directory is not writable");
   return dir;
@@ -140,7 +137,8 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   const std::string& envFile = sceneOptions.environment.file;
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
     throw InputError(envFile, "environment map not found");
-  const std::filesystem::path dir = leader ? prepareOutputDir(args.outputDir) : std::filesystem::path();
+  const std::filesystem::path dir =
+      leader ? prepareOutputDir(args.outputDir, args.quiet) : std::filesystem::path();
 
   Warnings warnings([&](const std::string& message) {
     if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
@@ -302,7 +300,7 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("scene", args->scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
       ->required();
   cmd->add_option("-o,--output", args->outputDir,
-                  "output directory, created if missing (its parent must exist), e.g. -o out/cmp")
+                  "output directory, created (with its missing parents) if missing, e.g. -o out/cmp")
       ->required();
   cmd->add_option("--spp", args->spp, "samples per pixel for every model (>= 1), e.g. --spp 64")
       ->check(CLI::Range(1, 1 << 24))

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "api/output_file.h"
 #include "app/command.h"
 #include "app/option_checks.h"
 #include "core/error.h"
@@ -170,6 +171,7 @@ int refuse(const DiffOptions& o, int status, const std::string& message) {
 }
 
 int runDiff(const DiffOptions& o) {
+  if (!o.heatmap.empty()) noteCreatedFolder(createFolderFor(o.heatmap), false);
   ImageMetadata metaA, metaB;
   Image a, b;
   try {

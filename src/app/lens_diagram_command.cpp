@@ -3,6 +3,8 @@
 
 #include <memory>
 
+#include "api/output_file.h"
+#include "app/command.h"
 #include "app/lens_subcommands.h"
 #include "app/lens_view_flags.h"
 #include "report/lens_diagram.h"
@@ -16,8 +18,11 @@ CommandAction addLensDiagramCommand(CLI::App& lensApp, const CommandContext&) {
   addLensViewOptions(*diagram, *options);
   return [options] {
     Warnings warnings([](const std::string& w) { fmt::print(stderr, "lensrt: warning: {}\n", w); });
+    if (std::filesystem::path(options->output).extension() == ".svg")
+      noteCreatedFolder(createFolderFor(options->output), false);
     const LensView view = prepareLensView(*options, warnings);
     drawLensDiagram(view).write(options->output);
+    fmt::print(stderr, "lensrt: wrote {}\n", options->output);
     return 0;
   };
 }

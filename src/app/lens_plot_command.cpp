@@ -4,9 +4,12 @@
 
 #include <memory>
 
+#include "api/output_file.h"
 #include "api/text_file.h"
+#include "app/command.h"
 #include "app/lens_subcommands.h"
 #include "app/lens_view_flags.h"
+#include "optics/chromatic.h"
 #include "report/lens_plot.h"
 
 namespace lensrt {
@@ -36,15 +39,30 @@ CommandAction addLensPlotCommand(CLI::App& lensApp, const CommandContext&) {
   return [options] {
     if (options->view.output.empty() && options->csv.empty())
       throw CLI::RequiredError("an output: -o FILE.svg or --csv FILE (or both)");
-    if (!options->csv.empty() && options->csv != "-") checkOutputDirectory(options->csv);
+    if (!options->view.output.empty() && std::filesystem::path(options->view.output).extension() == ".svg")
+      noteCreatedFolder(createFolderFor(options->view.output), false);
+    if (!options->csv.empty() && options->csv != "-") {
+      noteCreatedFolder(createFolderFor(options->csv), false);
+      checkOutputDirectory(options->csv);
+    }
     Warnings warnings([](const std::string& w) { fmt::print(stderr, "lensrt: warning: {}\n", w); });
     const LensView view = prepareLensView(options->view, warnings);
+    if (options->what == "chromatic" && !hasDispersion(view.lens.prescription()))
+      warnings.warn(view.lens.prescription().name +
+                    ": no dispersion data (Abbe numbers or Sellmeier coefficients), so every wavelength "
+                    "focuses alike: the chromatic curves are zero");
     const LensPlot plot = options->what == "distortion"  ? plotDistortion(view)
                           : options->what == "spot"      ? plotSpotDiagrams(view)
                           : options->what == "chromatic" ? plotChromatic(view)
                                                          : plotRelativeIllumination(view);
-    if (!options->view.output.empty()) plot.svg.write(options->view.output);
-    if (!options->csv.empty()) writeTextOutput(options->csv, plot.table.csv());
+    if (!options->view.output.empty()) {
+      plot.svg.write(options->view.output);
+      fmt::print(stderr, "lensrt: wrote {}\n", options->view.output);
+    }
+    if (!options->csv.empty()) {
+      writeTextOutput(options->csv, plot.table.csv());
+      if (options->csv != "-") fmt::print(stderr, "lensrt: wrote {}\n", options->csv);
+    }
     return 0;
   };
 }

@@ -35,7 +35,7 @@ std::uint64_t count(const ImageMetadata& m, const std::string& key) {
 }
 
 int runMerge(const MergeArgs& args) {
-  checkOutputFile(args.output);
+  noteCreatedFolder(checkOutputFile(args.output), args.quiet);
   if (std::filesystem::path(args.output).extension() != ".exr")
     throw CLI::ValidationError("-o",
                                "the merged image must be an .exr (it keeps every channel and the metadata)");

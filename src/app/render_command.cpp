@@ -138,7 +138,7 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   // Everything that can be checked without rendering is checked first, so
   // that a long render never ends in an error.
   std::error_code ec;
-  if (leader) checkOutputFile(args.output);
+  if (leader) noteCreatedFolder(checkOutputFile(args.output), args.quiet);
   const bool exr = std::filesystem::path(args.output).extension() == ".exr";
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw CLI::ValidationError("--checkpoint/--resume",

@@ -344,10 +344,11 @@ TEST(LensPlotCli, BadArgumentsFailWithOneLineAndLeaveTheOutputAlone) {
       {{"lens", "diagram", "dgauss-50mm", "-o", (dir / "x.png").string()}, 2},
       {{"lens", "diagram", "no-such-lens", "-o", out}, 1},
       {{"lens", "diagram", "dgauss-50mm", "--focus", "0.01", "-o", out}, 1},
-      {{"lens", "plot", "dgauss-50mm", "--what", "distortion", "-o", (dir / "missing" / "d.svg").string()},
+      // A folder under a file cannot be made.
+      {{"lens", "plot", "dgauss-50mm", "--what", "distortion", "-o", (dir / "keep.svg" / "d.svg").string()},
        1},
       {{"lens", "plot", "dgauss-50mm", "--what", "distortion"}, 2},  // neither -o nor --csv
-      {{"lens", "plot", "dgauss-50mm", "--what", "spot", "--csv", (dir / "missing" / "s.csv").string()}, 1},
+      {{"lens", "plot", "dgauss-50mm", "--what", "spot", "--csv", (dir / "keep.svg" / "s.csv").string()}, 1},
       {{"lens", "plot", "dgauss-50mm", "--what", "spot", "--csv", (dir / "s.csv").string(), "-o",
         out + ".png"},
        2},
