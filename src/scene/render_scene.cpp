@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "scene/embree_config.h"
 #include "scene/embree_handles.h"
 #include "scene/surface_alpha.h"
 
@@ -168,6 +169,7 @@ struct GeometryRecord {
 struct RenderScene::Impl {
   SceneDesc desc;
   ErrorSlot errors;
+  std::optional<std::string> config;  // LENSRT_EMBREE_CONFIG
   // Before the device: Embree reports frees while the scenes are released.
   std::atomic<std::int64_t> embreeBytes{0};
   EmbreeDevice device;
@@ -181,7 +183,12 @@ struct RenderScene::Impl {
   void check(const char* what) {
     if (rtcGetDeviceError(device.get()) == RTC_ERROR_NONE) return;
     const std::scoped_lock lock(errors.mutex);
-    throw InputError(desc.sourceFile, std::string("Embree failed to ") + what + ": " + errors.message);
+    // An acceleration structure named in LENSRT_EMBREE_CONFIG is Embree's to
+    // judge: its refusal names the variable.
+    throw InputError(
+        desc.sourceFile,
+        std::string("Embree failed to ") + what + ": " + errors.message +
+            (config ? std::string(" (") + kEmbreeConfigVariable + "='" + *config + "')" : std::string()));
   }
 
   void validate() const;
@@ -272,15 +279,15 @@ EmbreeGeometry RenderScene::Impl::newTriangles(int meshIndex, const Transform* b
 void RenderScene::Impl::build() {
   validate();
   buildMasks();
-  // LENSRT_EMBREE_CONFIG goes to rtcNewDevice verbatim (e.g. "isa=sse4.2"):
-  // Embree picks its kernels by the CPU's instruction set, so CI runs the
-  // scene and render suites once more held to a lower ISA than the machine's.
-  const char* config = std::getenv("LENSRT_EMBREE_CONFIG");
-  device.reset(rtcNewDevice(config));
+  // LENSRT_EMBREE_CONFIG goes to rtcNewDevice (e.g. "isa=sse4.2"), checked
+  // first: Embree picks its kernels by the CPU's instruction set, so CI runs
+  // the scene and render suites once more held to a lower ISA than the machine's.
+  config = embreeConfigFromEnvironment();
+  device.reset(rtcNewDevice(config ? config->c_str() : nullptr));
   if (!device) {
     const std::string why = embreeErrorName(rtcGetDeviceError(nullptr));
-    throw InputError(desc.sourceFile, config ? "cannot create the Embree device with LENSRT_EMBREE_CONFIG='" +
-                                                   std::string(config) + "' (" + why + ")"
+    throw InputError(desc.sourceFile, config ? std::string("cannot create the Embree device with ") +
+                                                   kEmbreeConfigVariable + "='" + *config + "' (" + why + ")"
                                              : "cannot create the Embree device (" + why + ")");
   }
   rtcSetDeviceErrorFunction(device.get(), recordError, &errors);
