@@ -41,7 +41,8 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "rotation of the blade polygon in degrees, e.g. 15")
       ->check(numberIn(-360.0, 360.0, "degrees"));
   cmd.add_option("--aperture-mask", o.apertureMask,
-                 "grey-scale image (PNG) over the stop of --camera lens, white transmits: bokeh takes its "
+                 "grey-scale image (PNG, JPEG, BMP or TGA) over the stop of --camera lens, white transmits: "
+                 "bokeh takes its "
                  "shape; instead of --blades");
   cmd.add_option("--focal-length", o.focalLengthMm,
                  "focal length in mm: without --lens the thin lens's and pinhole's (default: from the glTF "

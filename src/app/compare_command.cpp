@@ -291,8 +291,9 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
 CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   CLI::App* cmd = app.add_subcommand(
       "compare",
-      "Render a scene through the four camera models with matched settings: pinhole, thin and thick lens "
-      "derived from --lens's paraxial data, and the full lens. Writes DIR/{pinhole,thin,thick,lens}.exr, "
+      "Render a scene through the four camera models (pinhole, thin, thick, lens) side by side\n"
+      "Pinhole, thin and thick lens derived from --lens's paraxial data, and the full lens. Writes "
+      "DIR/{pinhole,thin,thick,lens}.exr, "
       "contact-sheet.png, diff-<model>-vs-lens.png heat maps, report.json and report.html.\n"
       "Example: lensrt compare scenes/dof_row.gltf --lens dgauss-50mm --fstop 2 --focus 2 --spp 64 "
       "--res 640x360 -o out/cmp");

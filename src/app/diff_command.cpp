@@ -37,7 +37,8 @@ struct DiffOptions {
 };
 
 constexpr const char* kDescription =
-    "Compare two images channel by channel: EXR (through OpenEXR), PNG, JPEG,\n"
+    "Compare two images, by thresholds as OpenImageIO's idiff does or statistically (--noise-aware)\n"
+    "Channel by channel: EXR (through OpenEXR), PNG, JPEG,\n"
     "Radiance HDR, BMP, TGA, PSD, GIF, PIC or PNM (through stb_image).\n"
     "Prints per channel and overall: max |A-B| and its pixel, mean |A-B|, RMSE,\n"
     "PSNR (peak 1.0), mean relative error |A-B|/max((|A|+|B|)/2, floor), and the\n"

@@ -186,7 +186,7 @@ CommandAction addLensInfoCommand(CLI::App& lensApp, const CommandContext&) {
 }
 
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
-  CLI::App* lensApp = app.add_subcommand("lens", "Lens tools: inspect prescriptions");
+  CLI::App* lensApp = app.add_subcommand("lens", "Lens tools: info, diagram and plot of a prescription");
   lensApp->require_subcommand(1);
   // One entry per `lens` sub-subcommand (diagram and plot join here).
   std::vector<std::pair<CLI::App*, CommandAction>> subs;

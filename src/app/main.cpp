@@ -97,6 +97,16 @@ int main(int argc, char** argv) {
   add(lensrt::addDiffCommand);
   add(lensrt::addCompareCommand);
   add(lensrt::addMergeCommand);
+  // `lensrt --help` lists one line per command; the rest of a command's
+  // description (examples, diff's statistics) stays in its own --help, after
+  // its options.
+  for (CLI::App* sub : app.get_subcommands({})) {
+    const std::string text = sub->get_description();
+    const std::size_t newline = text.find('\n');
+    if (newline == std::string::npos) continue;
+    sub->description(text.substr(0, newline));
+    sub->footer(text.substr(newline + 1));
+  }
 
   try {
     app.parse(argc, argv);

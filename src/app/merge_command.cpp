@@ -102,11 +102,12 @@ int runMerge(const MergeArgs& args) {
 }  // namespace
 
 CommandAction addMergeCommand(CLI::App& app, const CommandContext&) {
-  CLI::App* cmd = app.add_subcommand(
-      "merge",
-      "Join the parts of one render (lensrt render --tile I/N or --crop outputs) into the whole image, after "
-      "checking that they come from the same render and cover the frame exactly once.\n"
-      "Example: lensrt merge out/part-*.exr -o out/whole.exr");
+  CLI::App* cmd =
+      app.add_subcommand("merge",
+                         "Join the parts of one render (--tile or --crop outputs) into the whole image\n"
+                         "Joins lensrt render --tile I/N or --crop outputs after checking that they come "
+                         "from the same render and cover the frame exactly once.\n"
+                         "Example: lensrt merge out/part-*.exr -o out/whole.exr");
   auto args = std::make_shared<MergeArgs>();
   cmd->add_option("parts", args->parts, "the parts: EXR files written by lensrt render --tile/--crop")
       ->required();
