@@ -50,8 +50,9 @@ constexpr const char* kDescription =
     "Channels are matched by name.\n"
     "\n"
     "--noise-aware (both images need variance.R/G/B, the variance of each\n"
-    "pixel's mean, from `lensrt render --aov variance`). Two tests, each at half\n"
-    "the image-level false-alarm rate --image-alpha; either failing FAILS:\n"
+    "pixel's mean, from `lensrt render --aov variance`). Three tests, the count\n"
+    "test at half the image-level false-alarm rate --image-alpha, the flux and\n"
+    "gain tests at a quarter each; any failing FAILS:\n"
     " count test: per pixel and channel t = |A-B| / sqrt(varA + varB +\n"
     "   (floor*(|A|+|B|)/2)^2) against the two-sided Student-t quantile (nu =\n"
     "   min spp - 1, spp from lensrt:spp metadata or --spp; normal if unknown)\n"
@@ -61,8 +62,13 @@ constexpr const char* kDescription =
     "   k with P(Binomial(N, pixel-alpha) > k) <= image-alpha/2.\n"
     " flux test: per channel z = sum(A-B) / sqrt(sum(varA+varB+floor^2)),\n"
     "   normal for unbiased renders; fails when |z| exceeds the two-sided\n"
-    "   quantile at image-alpha/6 (catches small global changes such as a 2%\n"
-    "   gain that no single pixel shows).\n"
+    "   quantile at image-alpha/12 (catches small global changes that no single\n"
+    "   pixel shows).\n"
+    " gain test: per channel z = sum(m d / v) / sqrt(sum(m^2 / v)), d = A-B,\n"
+    "   m = (|A|+|B|)/2, v as above: the weighted least-squares fit of d = g m,\n"
+    "   which weights each pixel by its signal to noise, so a few noisy pixels\n"
+    "   (fireflies, small bright lights) cannot hide a 2% gain; tested like the\n"
+    "   flux test.\n"
     "Two renders with different seeds thus FAIL with probability at most\n"
     "image-alpha (pixels assumed independent). Only R,G,B decide; the idiff\n"
     "counts are reported, not applied (--hard-fail/--hard-warn still apply).\n"
@@ -118,6 +124,9 @@ nlohmann::json noiseJson(const NoiseAwareReport& n, const NoiseAwareOptions& o) 
           {"fluxRelativeDifference",
            {numberOrNull(n.fluxRelativeDifference[0]), numberOrNull(n.fluxRelativeDifference[1]),
             numberOrNull(n.fluxRelativeDifference[2])}},
+          {"gainZ", {numberOrNull(n.gainZ[0]), numberOrNull(n.gainZ[1]), numberOrNull(n.gainZ[2])}},
+          {"gainEstimate",
+           {numberOrNull(n.gainEstimate[0]), numberOrNull(n.gainEstimate[1]), numberOrNull(n.gainEstimate[2])}},
           {"fluxCriticalValue", n.fluxCriticalValue},
           {"maxT", numberOrNull(n.maxT)},
           {"maxPixel", {n.maxX, n.maxY}},
@@ -155,6 +164,11 @@ void printText(const DiffOptions& o, const DiffReport& r, const std::optional<No
         "difference {:.3g}, {:.3g}, {:.3g}\n",
         n.fluxZ[0], n.fluxZ[1], n.fluxZ[2], n.fluxCriticalValue, n.fluxRelativeDifference[0],
         n.fluxRelativeDifference[1], n.fluxRelativeDifference[2]);
+    fmt::print(
+        "  Noise-aware gain test: z(R,G,B) = {:.3g}, {:.3g}, {:.3g} (|z| > {:.3f} fails); weighted gain "
+        "{:.3g}, {:.3g}, {:.3g}\n",
+        n.gainZ[0], n.gainZ[1], n.gainZ[2], n.fluxCriticalValue, n.gainEstimate[0], n.gainEstimate[1],
+        n.gainEstimate[2]);
     fmt::print("  Noise-aware: pixel alpha {:g}, image alpha {:g}: {}\n", o.noise.pixelFalseAlarmRate,
                o.noise.imageFalseAlarmRate, n.pass ? "consistent with noise" : "NOT consistent with noise");
   }

@@ -12,8 +12,9 @@
 // makes small-spp variance estimates too low, which the t quantile and the
 // floor temper but cannot remove: compare renders of at least ~16 spp.
 //
-// Two tests judge the image, each at half the stated image-level
-// false-alarm rate beta (Bonferroni), and it fails if either does:
+// Three tests judge the image, the count test at half the stated
+// image-level false-alarm rate beta and the flux and gain tests at a quarter
+// each (Bonferroni), and it fails if any does:
 //  - Count test, for local changes. A pixel fails when any of its R,G,B has
 //    |t| > c, c set so a pixel of two equivalent renders fails with
 //    probability alpha (the per-pixel false-alarm rate, split over the
@@ -28,7 +29,16 @@
 //    any one pixel to fail). Per channel, z = sum(A-B) / sqrt(sum(varA+varB))
 //    is close to standard normal for unbiased renders (the central limit
 //    theorem over pixels; valid for different spp too), tested two-sided at
-//    beta/6 per channel.
+//    beta/12 per channel.
+//  - Gain test, for a change of exposure where a few noisy pixels (fireflies,
+//    small bright lights) dominate the flux's variance. Per channel the
+//    weighted least-squares gain g = sum(m d / v) / sum(m^2 / v) of the
+//    differences d = A-B against the pixel means m = (|A|+|B|)/2, with v the
+//    floored variance of d, has z = sum(m d / v) / sqrt(sum(m^2 / v)): the
+//    matched filter of a gain, which weights each pixel by its signal to
+//    noise. The weights are symmetric in A and B, so for equivalent renders
+//    z is centred on 0; it is tested two-sided at beta/12 per channel (the
+//    golden suite measures the false-alarm rate, tools/measure-false-alarms).
 // Both tests assume independent pixels (per-pixel sample streams, no
 // filter splatting across pixels or denoising).
 #pragma once
@@ -61,7 +71,9 @@ struct NoiseAwareReport {
   long long allowedFailures = 0;                   // k, at beta/2
   std::array<double, 3> fluxZ{};                   // per R,G,B: sum(A-B) / sqrt(sum(varA+varB))
   std::array<double, 3> fluxRelativeDifference{};  // sum(A-B) / sum((|A|+|B|)/2)
-  double fluxCriticalValue = 0;                    // |z| above this fails
+  std::array<double, 3> gainZ{};                   // per R,G,B: the gain test's z
+  std::array<double, 3> gainEstimate{};            // its weighted gain of A over B, minus 1
+  double fluxCriticalValue = 0;                    // |z| above this fails (flux and gain)
   double maxT = 0;                                 // largest |t| and where
   int maxX = 0, maxY = 0;
   std::string maxChannel;

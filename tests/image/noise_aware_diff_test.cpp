@@ -56,6 +56,51 @@ TEST(NoiseAwareDiff, TwoPercentGainFails) {
   EXPECT_NEAR(r.fluxRelativeDifference[1], -0.02 / 1.01, 0.004);
 }
 
+// A few firefly pixels (bright, with a variance to match) dominate the flux's
+// variance, so a 2% gain hides from the flux test; the gain test weights each
+// pixel by its signal to noise and sees it.
+TEST(NoiseAwareDiff, TheGainTestSeesAGainThatFirefliesHideFromTheFlux) {
+  const auto withFireflies = [](Image image) {
+    for (int k = 0; k < 20; ++k)
+      for (int c = 0; c < 3; ++c) {
+        const int x = (37 * k) % kSize, y = (53 * k + 11) % kSize;
+        image.at(x, y, c) = 500.0f;
+        image.at(x, y, 3 + c) = 4e4f;  // a standard deviation of 200
+      }
+    return image;
+  };
+  const Image reference = withFireflies(noisyRender(kSize, kSize, 3, kSpp, kSampleNoise));
+  const NoiseAwareReport same = noiseAwareDiff(
+      reference, withFireflies(noisyRender(kSize, kSize, 4, kSpp, kSampleNoise)), optionsFor(kSpp));
+  EXPECT_TRUE(same.pass) << "gain z " << same.gainZ[1];
+  Image gained = noisyRender(kSize, kSize, 4, kSpp, kSampleNoise, 1.02);
+  gained = withFireflies(gained);
+  const NoiseAwareReport r = noiseAwareDiff(reference, gained, optionsFor(kSpp));
+  EXPECT_FALSE(r.pass);
+  EXPECT_LT(std::fabs(r.fluxZ[1]), r.fluxCriticalValue) << "the flux test alone would see it";
+  EXPECT_GT(std::fabs(r.gainZ[1]), r.fluxCriticalValue);
+  EXPECT_NEAR(r.gainEstimate[1], -0.02, 0.004);  // sum(m d / v) / sum(m^2 / v): A over B, minus 1
+}
+
+// The gain test's z is close to standard normal for equivalent renders, also
+// at 16 samples a pixel (variance estimates with 15 degrees of freedom): at
+// an image alpha of 0.24 each channel is tested at 0.02, so about 6% of 300
+// pairs fail it (18, standard deviation 4.1).
+TEST(NoiseAwareDiff, TheGainTestsFalseAlarmRateIsAsStated) {
+  NoiseAwareOptions o = optionsFor(16);
+  o.imageFalseAlarmRate = 0.24;
+  o.pixelFalseAlarmRate = 1e-9;  // the count test out of the way
+  int gainFailures = 0;
+  for (unsigned seed = 100; seed < 400; ++seed) {
+    const NoiseAwareReport r = noiseAwareDiff(noisyRender(48, 48, 2 * seed, 16, kSampleNoise),
+                                              noisyRender(48, 48, 2 * seed + 1, 16, kSampleNoise), o);
+    gainFailures += std::fabs(r.gainZ[0]) > r.fluxCriticalValue ||
+                    std::fabs(r.gainZ[1]) > r.fluxCriticalValue ||
+                    std::fabs(r.gainZ[2]) > r.fluxCriticalValue;
+  }
+  EXPECT_NEAR(gainFailures, 18, 4 * 4.1) << "false alarms of the gain test in 300 pairs";
+}
+
 TEST(NoiseAwareDiff, OnePixelShiftFails) {
   const NoiseAwareReport r =
       noiseAwareDiff(noisyRender(kSize, kSize, 1, kSpp, kSampleNoise),
