@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "scene/png_allocation.h"
 
 namespace lensrt {
 namespace {
@@ -54,6 +55,9 @@ ApertureMask decodeApertureMask(std::string_view bytes, const std::string& name)
   if (std::uint32_t w = 0, h = 0; pngSize(bytes, w, h) && (w > kMaxSide || h > kMaxSide))
     throw InputError(name,
                      fmt::format("the aperture mask is {}x{}, larger than {}x{}", w, h, kMaxSide, kMaxSide));
+  if (const std::optional<std::string> bomb =
+          pngAllocationProblem(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()))
+    throw InputError(name, "the aperture mask: " + *bomb);
   tinygltf::Image image;
   std::string err, warn;
   // The decoder of the glTF textures (stb_image): errors come back as text.

@@ -68,7 +68,7 @@ constexpr const char* kDescription =
     "   m = (|A|+|B|)/2, v as above: the weighted least-squares fit of d = g m,\n"
     "   which weights each pixel by its signal to noise, so a few noisy pixels\n"
     "   (fireflies, small bright lights) cannot hide a 2% gain; tested like the\n"
-    "   flux test.\n"
+    "   flux test when both images have the same spp (else reported only).\n"
     "Two renders with different seeds thus FAIL with probability at most\n"
     "image-alpha (pixels assumed independent). Only R,G,B decide; the idiff\n"
     "counts are reported, not applied (--hard-fail/--hard-warn still apply).\n"
@@ -108,30 +108,32 @@ nlohmann::json statsJson(const DiffStats& s) {
 }
 
 nlohmann::json noiseJson(const NoiseAwareReport& n, const NoiseAwareOptions& o) {
-  return {{"pixelFalseAlarmRate", o.pixelFalseAlarmRate},
-          {"imageFalseAlarmRate", o.imageFalseAlarmRate},
-          {"relativeFloor", o.relativeFloor},
-          {"degreesOfFreedom", n.degreesOfFreedom},
-          {"criticalValue", n.criticalValue},
-          {"testedPixels", n.testedPixels},
-          {"zeroVariancePixels", n.zeroVariancePixels},
-          {"zeroVarianceFailures", n.zeroVarianceFailures},
-          {"statisticalFailures", n.statisticalFailures},
-          {"failingPixels", n.failingPixels},
-          {"expectedFailures", n.expectedFailures},
-          {"allowedFailures", n.allowedFailures},
-          {"fluxZ", {numberOrNull(n.fluxZ[0]), numberOrNull(n.fluxZ[1]), numberOrNull(n.fluxZ[2])}},
-          {"fluxRelativeDifference",
-           {numberOrNull(n.fluxRelativeDifference[0]), numberOrNull(n.fluxRelativeDifference[1]),
-            numberOrNull(n.fluxRelativeDifference[2])}},
-          {"gainZ", {numberOrNull(n.gainZ[0]), numberOrNull(n.gainZ[1]), numberOrNull(n.gainZ[2])}},
-          {"gainEstimate",
-           {numberOrNull(n.gainEstimate[0]), numberOrNull(n.gainEstimate[1]), numberOrNull(n.gainEstimate[2])}},
-          {"fluxCriticalValue", n.fluxCriticalValue},
-          {"maxT", numberOrNull(n.maxT)},
-          {"maxPixel", {n.maxX, n.maxY}},
-          {"maxChannel", n.maxChannel},
-          {"pass", n.pass}};
+  return {
+      {"pixelFalseAlarmRate", o.pixelFalseAlarmRate},
+      {"imageFalseAlarmRate", o.imageFalseAlarmRate},
+      {"relativeFloor", o.relativeFloor},
+      {"degreesOfFreedom", n.degreesOfFreedom},
+      {"criticalValue", n.criticalValue},
+      {"testedPixels", n.testedPixels},
+      {"zeroVariancePixels", n.zeroVariancePixels},
+      {"zeroVarianceFailures", n.zeroVarianceFailures},
+      {"statisticalFailures", n.statisticalFailures},
+      {"failingPixels", n.failingPixels},
+      {"expectedFailures", n.expectedFailures},
+      {"allowedFailures", n.allowedFailures},
+      {"fluxZ", {numberOrNull(n.fluxZ[0]), numberOrNull(n.fluxZ[1]), numberOrNull(n.fluxZ[2])}},
+      {"fluxRelativeDifference",
+       {numberOrNull(n.fluxRelativeDifference[0]), numberOrNull(n.fluxRelativeDifference[1]),
+        numberOrNull(n.fluxRelativeDifference[2])}},
+      {"gainZ", {numberOrNull(n.gainZ[0]), numberOrNull(n.gainZ[1]), numberOrNull(n.gainZ[2])}},
+      {"gainDecides", n.gainDecides},
+      {"gainEstimate",
+       {numberOrNull(n.gainEstimate[0]), numberOrNull(n.gainEstimate[1]), numberOrNull(n.gainEstimate[2])}},
+      {"fluxCriticalValue", n.fluxCriticalValue},
+      {"maxT", numberOrNull(n.maxT)},
+      {"maxPixel", {n.maxX, n.maxY}},
+      {"maxChannel", n.maxChannel},
+      {"pass", n.pass}};
 }
 
 void printText(const DiffOptions& o, const DiffReport& r, const std::optional<NoiseAwareReport>& noise) {
@@ -165,10 +167,12 @@ void printText(const DiffOptions& o, const DiffReport& r, const std::optional<No
         n.fluxZ[0], n.fluxZ[1], n.fluxZ[2], n.fluxCriticalValue, n.fluxRelativeDifference[0],
         n.fluxRelativeDifference[1], n.fluxRelativeDifference[2]);
     fmt::print(
-        "  Noise-aware gain test: z(R,G,B) = {:.3g}, {:.3g}, {:.3g} (|z| > {:.3f} fails); weighted gain "
-        "{:.3g}, {:.3g}, {:.3g}\n",
-        n.gainZ[0], n.gainZ[1], n.gainZ[2], n.fluxCriticalValue, n.gainEstimate[0], n.gainEstimate[1],
-        n.gainEstimate[2]);
+        "  Noise-aware gain test: z(R,G,B) = {:.3g}, {:.3g}, {:.3g} ({}); weighted gain {:.3g}, {:.3g}, "
+        "{:.3g}\n",
+        n.gainZ[0], n.gainZ[1], n.gainZ[2],
+        n.gainDecides ? fmt::format("|z| > {:.3f} fails", n.fluxCriticalValue)
+                      : std::string("reported only: the images' spp differ or are unknown"),
+        n.gainEstimate[0], n.gainEstimate[1], n.gainEstimate[2]);
     fmt::print("  Noise-aware: pixel alpha {:g}, image alpha {:g}: {}\n", o.noise.pixelFalseAlarmRate,
                o.noise.imageFalseAlarmRate, n.pass ? "consistent with noise" : "NOT consistent with noise");
   }

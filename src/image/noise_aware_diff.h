@@ -37,8 +37,10 @@
 //    floored variance of d, has z = sum(m d / v) / sqrt(sum(m^2 / v)): the
 //    matched filter of a gain, which weights each pixel by its signal to
 //    noise. The weights are symmetric in A and B, so for equivalent renders
-//    z is centred on 0; it is tested two-sided at beta/12 per channel (the
-//    golden suite measures the false-alarm rate, tools/measure-false-alarms).
+//    z is centred on 0 when both have the same spp (with different spp the
+//    skew of Monte Carlo noise biases it, and the test only reports); it is
+//    tested two-sided at beta/12 per channel (the golden suite measures the
+//    false-alarm rate, tools/measure-false-alarms).
 // Both tests assume independent pixels (per-pixel sample streams, no
 // filter splatting across pixels or denoising).
 #pragma once
@@ -73,6 +75,7 @@ struct NoiseAwareReport {
   std::array<double, 3> fluxRelativeDifference{};  // sum(A-B) / sum((|A|+|B|)/2)
   std::array<double, 3> gainZ{};                   // per R,G,B: the gain test's z
   std::array<double, 3> gainEstimate{};            // its weighted gain of A over B, minus 1
+  bool gainDecides = false;                        // both spp known and equal: the gain test counts
   double fluxCriticalValue = 0;                    // |z| above this fails (flux and gain)
   double maxT = 0;                                 // largest |t| and where
   int maxX = 0, maxY = 0;

@@ -10,6 +10,7 @@
 
 #include "core/constants.h"
 #include "scene/gltf_values.h"
+#include "scene/png_allocation.h"
 
 namespace lensrt::gltf {
 namespace {
@@ -184,6 +185,8 @@ class TextureLoader {
     }
     if (const std::optional<std::pair<std::uint32_t, std::uint32_t>> dims = declaredSize(bytes, size))
       checkLimits(imageName, dims->first, dims->second, "declares");
+    if (const std::optional<std::string> bomb = pngAllocationProblem(bytes, size))
+      ctx_.fail("texture image '" + imageName + "': " + *bomb);
     tinygltf::Image decoded;
     std::string err, warn;
     // nullptr options: tinygltf's default, which expands to 4 channels.

@@ -101,6 +101,22 @@ TEST(NoiseAwareDiff, TheGainTestsFalseAlarmRateIsAsStated) {
   EXPECT_NEAR(gainFailures, 18, 4 * 4.1) << "false alarms of the gain test in 300 pairs";
 }
 
+// With different or unknown spp the gain test reports but does not decide.
+TEST(NoiseAwareDiff, TheGainTestDecidesOnlyForEqualSpp) {
+  const Image a = noisyRender(kSize, kSize, 5, kSpp, kSampleNoise);
+  const Image b = noisyRender(kSize, kSize, 6, kSpp, kSampleNoise, 1.02);
+  NoiseAwareOptions o = optionsFor(kSpp);
+  const NoiseAwareReport equal = noiseAwareDiff(a, b, o);
+  EXPECT_TRUE(equal.gainDecides);
+  EXPECT_GT(std::fabs(equal.gainZ[1]), equal.fluxCriticalValue);
+  o.samplesB = 2 * kSpp;
+  const NoiseAwareReport differ = noiseAwareDiff(a, b, o);
+  EXPECT_FALSE(differ.gainDecides);
+  EXPECT_GT(std::fabs(differ.gainZ[1]), differ.fluxCriticalValue);  // still reported
+  o.samplesA = o.samplesB = 0;
+  EXPECT_FALSE(noiseAwareDiff(a, b, o).gainDecides);
+}
+
 TEST(NoiseAwareDiff, OnePixelShiftFails) {
   const NoiseAwareReport r =
       noiseAwareDiff(noisyRender(kSize, kSize, 1, kSpp, kSampleNoise),
