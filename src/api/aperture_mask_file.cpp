@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "scene/png_allocation.h"
+#include "core/png_allocation.h"
 
 namespace lensrt {
 namespace {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/png_allocation.h"
 
 namespace lensrt {
 namespace {
@@ -151,6 +152,9 @@ Image decodeStbImage(std::string_view bytes, const std::string& name, std::size_
   if (bytes.size() > std::size_t(INT_MAX)) throw InputError(name, "the image file is larger than 2 GiB");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = int(bytes.size());
+  // Before stb_image allocates what a lying PNG claims (core/png_allocation.h).
+  if (const std::optional<std::string> problem = pngAllocationProblem(data, bytes.size()))
+    throw InputError(name, "cannot decode image: " + *problem);
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(data, length, &width, &height, &channels))
     throw InputError(name, failure("cannot read image"));

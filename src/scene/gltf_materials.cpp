@@ -10,7 +10,7 @@
 
 #include "core/constants.h"
 #include "scene/gltf_values.h"
-#include "scene/png_allocation.h"
+#include "core/png_allocation.h"
 
 namespace lensrt::gltf {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/png_allocation.h"
+#include "core/png_allocation.h"
 
 #include <zlib.h>
 
