@@ -23,7 +23,6 @@ using cli::runLensrt;
 using cli::RunResult;
 using cli::TempDir;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A white floor 2 m square at y = 0, facing up, seen from 2 m above.
 const cli::Quad kFloor{{{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}}, 0};
