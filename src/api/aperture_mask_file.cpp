@@ -19,19 +19,6 @@ namespace {
 
 constexpr int kMaxSide = 4096;
 
-// A PNG's size from its IHDR chunk, checked before decoding so that a
-// header claiming gigapixels is refused instead of allocated.
-bool pngSize(std::string_view b, std::uint32_t& w, std::uint32_t& h) {
-  static const char kSignature[] = "\x89PNG\r\n\x1a\n";
-  if (b.size() < 24 || b.compare(0, 8, kSignature, 8) != 0 || b.compare(12, 4, "IHDR") != 0) return false;
-  const auto be32 = [&](std::size_t at) {
-    return std::uint32_t(std::uint8_t(b[at])) << 24 | std::uint32_t(std::uint8_t(b[at + 1])) << 16 |
-           std::uint32_t(std::uint8_t(b[at + 2])) << 8 | std::uint32_t(std::uint8_t(b[at + 3]));
-  };
-  w = be32(16), h = be32(20);
-  return true;
-}
-
 std::string readBytes(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(file.string(), "no such file");
@@ -52,11 +39,13 @@ ApertureMask readApertureMask(const std::filesystem::path& file) {
 }
 
 ApertureMask decodeApertureMask(std::string_view bytes, const std::string& name) {
-  if (std::uint32_t w = 0, h = 0; pngSize(bytes, w, h) && (w > kMaxSide || h > kMaxSide))
-    throw InputError(name,
-                     fmt::format("the aperture mask is {}x{}, larger than {}x{}", w, h, kMaxSide, kMaxSide));
-  if (const std::optional<std::string> bomb =
-          pngAllocationProblem(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()))
+  // A header claiming gigapixels is refused instead of allocated.
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  if (const auto size = pngDeclaredSize(data, bytes.size());
+      size && (size->first > kMaxSide || size->second > kMaxSide))
+    throw InputError(name, fmt::format("the aperture mask is {}x{}, larger than {}x{}", size->first,
+                                       size->second, kMaxSide, kMaxSide));
+  if (const std::optional<std::string> bomb = pngAllocationProblem(data, bytes.size()))
     throw InputError(name, "the aperture mask: " + *bomb);
   tinygltf::Image image;
   std::string err, warn;

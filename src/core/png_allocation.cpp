@@ -21,10 +21,18 @@ std::uint64_t maxRawBytes(std::uint32_t width, std::uint32_t height, unsigned bi
   return std::uint64_t{height} * (row + 1) + 7 * (std::uint64_t{height} + 1) * 2;
 }
 
+constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
 }  // namespace
 
+std::optional<std::pair<std::uint32_t, std::uint32_t>> pngDeclaredSize(const unsigned char* b,
+                                                                       std::size_t n) {
+  if (n < 24 || !std::equal(kSignature, kSignature + 8, b) || !std::equal(b + 12, b + 16, "IHDR"))
+    return std::nullopt;
+  return std::pair{bigEndian32(b + 16), bigEndian32(b + 20)};
+}
+
 std::optional<std::string> pngAllocationProblem(const unsigned char* b, std::size_t n) {
-  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (n < 33 || !std::equal(kSignature, kSignature + 8, b)) return std::nullopt;
   std::uint32_t width = 0, height = 0;
   unsigned bitsPerPixel = 0;

@@ -9,10 +9,17 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace lensrt {
+
+// Width and height the IHDR chunk of a PNG declares, read before a decoder
+// allocates for them; nullopt when `bytes` do not start a PNG.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> pngDeclaredSize(const unsigned char* bytes,
+                                                                       std::size_t size);
 
 // Why `bytes`, when they are a PNG, may not be decoded: a chunk runs past the
 // end of the data, or the image data inflates to more than the width, height

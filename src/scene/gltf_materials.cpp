@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "core/constants.h"
-#include "scene/gltf_values.h"
 #include "core/png_allocation.h"
+#include "scene/gltf_values.h"
 
 namespace lensrt::gltf {
 namespace {
@@ -31,16 +31,11 @@ std::string bytesText(std::uint64_t bytes) {
   return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
 }
 
-std::uint32_t bigEndian32(const unsigned char* b) {
-  return (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | b[3];
-}
-
 // Width and height a PNG or JPEG header declares, read before decoding
 // allocates for them; nullopt for other formats or broken headers (the
 // decoder then reports those).
 std::optional<std::pair<std::uint32_t, std::uint32_t>> declaredSize(const unsigned char* b, std::size_t n) {
-  static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (n >= 24 && std::equal(kPng, kPng + 8, b)) return std::pair{bigEndian32(b + 16), bigEndian32(b + 20)};
+  if (const auto png = pngDeclaredSize(b, n)) return png;
   if (n < 4 || b[0] != 0xFF || b[1] != 0xD8) return std::nullopt;
   // JPEG: walk the segments to the first start-of-frame marker.
   std::size_t at = 2;
