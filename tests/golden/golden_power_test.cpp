@@ -54,26 +54,6 @@ bool fails(const Image& reference, int referenceSpp, const Image& candidate, int
   return !noiseAwareDiff(reference, candidate, o).pass;
 }
 
-Image gained(Image image, double gain) {
-  for (const char* c : {"R", "G", "B"}) {
-    const int v = image.channelIndex(c), var = image.channelIndex(std::string("variance.") + c);
-    for (int y = 0; y < image.height; ++y)
-      for (int x = 0; x < image.width; ++x) {
-        image.at(x, y, v) *= float(gain);
-        image.at(x, y, var) *= float(gain * gain);
-      }
-  }
-  return image;
-}
-
-Image shifted(const Image& original) {
-  Image image = original;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 1; x < image.width; ++x)
-      for (int c = 0; c < int(image.channelCount()); ++c) image.at(x, y, c) = original.at(x - 1, y, c);
-  return image;
-}
-
 class GoldenPower : public ::testing::TestWithParam<GoldenCase> {};
 
 TEST_P(GoldenPower, CatchesATwoPercentGainAndAOnePixelShift) {

@@ -115,6 +115,28 @@ RunResult diffWithReference(const GoldenCase& c, const std::filesystem::path& ca
   return runLensrt(args);
 }
 
+Image gained(Image image, double gain) {
+  for (const char* c : {"R", "G", "B"}) {
+    const int v = image.channelIndex(c), var = image.channelIndex(std::string("variance.") + c);
+    if (v < 0 || var < 0)
+      throw std::runtime_error(std::string("gained: no channel ") + c + " or its variance");
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        image.at(x, y, v) *= float(gain);
+        image.at(x, y, var) *= float(gain * gain);
+      }
+  }
+  return image;
+}
+
+Image shifted(const Image& original) {
+  Image image = original;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 1; x < image.width; ++x)
+      for (int c = 0; c < int(image.channelCount()); ++c) image.at(x, y, c) = original.at(x - 1, y, c);
+  return image;
+}
+
 TempDir::TempDir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "lensrt";

@@ -53,6 +53,13 @@ GoldenCase withOption(GoldenCase c, const std::string& option, const std::string
 RunResult diffWithReference(const GoldenCase& c, const std::filesystem::path& candidate,
                             const std::vector<std::string>& extra = {});
 
+// Perturbations a regression would make, for the tests that the suite can
+// fail: R,G,B times `gain` (variance.R/G/B times its square, as a scaled
+// estimate's), and every channel moved right by one pixel (the first column
+// repeated).
+Image gained(Image image, double gain);
+Image shifted(const Image& image);
+
 // A fresh empty directory for the current test, removed by the destructor.
 class TempDir {
  public:
