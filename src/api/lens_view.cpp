@@ -13,10 +13,8 @@
 #include "optics/lens_readers.h"
 
 namespace lensrt {
-namespace {
-
-// Same syntax as `lens info --sensor` and `--focus`.
-void parseSensor(const std::string& text, double& w, double& h) {
+Vec2d parseSensorSize(const std::string& text) {
+  double w = 0.0, h = 0.0;
   const std::size_t x = text.find_first_of("xX");
   try {
     if (x != std::string::npos) {
@@ -24,25 +22,28 @@ void parseSensor(const std::string& text, double& w, double& h) {
       const std::string a = text.substr(0, x), b = text.substr(x + 1);
       w = std::stod(a, &used1);
       h = std::stod(b, &used2);
-      if (used1 == a.size() && used2 == b.size() && w > 0 && h > 0 && w < 1e4 && h < 1e4) return;
+      if (used1 == a.size() && used2 == b.size() && w > 0 && h > 0 && w < 1e4 && h < 1e4) return {w, h};
     }
   } catch (const std::exception&) {
   }
   throw UsageError("--sensor", "expected WIDTHxHEIGHT in mm, e.g. 36x24, got '" + text + "'");
 }
 
-double parseFocusMm(const std::string& text) {
+double parseFocusDistanceMm(const std::string& text) {
+  const double m = parseFocusMetres(text);
+  return std::isinf(m) ? kInfinity : m * 1000.0;
+}
+
+double parseFocusMetres(const std::string& text) {
   if (text == "inf" || text == "infinity") return kInfinity;
   try {
     std::size_t used = 0;
     const double m = std::stod(text, &used);
-    if (used == text.size() && m > 0 && std::isfinite(m)) return m * 1000.0;
+    if (used == text.size() && m > 0 && std::isfinite(m)) return m;
   } catch (const std::exception&) {
   }
   throw UsageError("--focus", "expected a distance in metres > 0 or 'inf', got '" + text + "'");
 }
-
-}  // namespace
 
 void checkSvgOutput(const std::string& output) {
   const std::filesystem::path file(output);
@@ -77,13 +78,23 @@ std::string LensView::summary() const {
 
 LensView prepareLensView(const LensViewOptions& o, Warnings& warnings) {
   if (!o.output.empty()) checkSvgOutput(o.output);
-  double w = 0.0, h = 0.0;
-  parseSensor(o.sensor, w, h);
-  const double focusMm = parseFocusMm(o.focus);
-  if (o.fNumber && !(*o.fNumber > 0.0 && std::isfinite(*o.fNumber)))
-    throw UsageError("--fstop", "must be a positive f-number");
+  parseSensorSize(o.sensor);
+  parseFocusDistanceMm(o.focus);
+  checkFNumber(o.fNumber);
   // The same lens errors, worded the same way, as lensrt render's.
-  const UserLens user = loadUserLens(o.lens, LENSRT_LENS_DIR);
+  return prepareLensView(loadUserLens(o.lens, LENSRT_LENS_DIR), o, warnings);
+}
+
+void checkFNumber(const std::optional<double>& fNumber) {
+  if (fNumber && !(*fNumber > 0.0 && std::isfinite(*fNumber)))
+    throw UsageError("--fstop", "must be a positive f-number");
+}
+
+LensView prepareLensView(const UserLens& user, const LensViewOptions& o, Warnings& warnings) {
+  const Vec2d sensor = parseSensorSize(o.sensor);
+  const double w = sensor.x, h = sensor.y;
+  const double focusMm = parseFocusDistanceMm(o.focus);
+  checkFNumber(o.fNumber);
   requireRealImage(user);
   return withLensErrors(user, [&] {
     const double widest = computeParaxial(user.prescription).fNumber;

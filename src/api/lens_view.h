@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "api/lens_loading.h"
+#include "core/vec.h"
 #include "core/warnings.h"
 #include "optics/lens_system.h"
 
@@ -35,6 +37,16 @@ struct LensView {
 // Validates the option values (UsageError: exit 2), loads, stops
 // down and focuses the lens (InputError: exit 1). An empty output is not checked.
 LensView prepareLensView(const LensViewOptions& options, Warnings& warnings);
+// The same for a lens already loaded (options.lens and .output unused).
+LensView prepareLensView(const UserLens& lens, const LensViewOptions& options, Warnings& warnings);
+
+// --sensor WIDTHxHEIGHT in mm (no names: lens commands state sizes), and
+// --focus in metres or inf, returned in mm (kInfinity allowed). Throw UsageError.
+Vec2d parseSensorSize(const std::string& text);
+double parseFocusDistanceMm(const std::string& text);
+double parseFocusMetres(const std::string& text);
+// --fstop: positive and finite when given. Throws UsageError.
+void checkFNumber(const std::optional<double>& fNumber);
 
 // The output must be an .svg path (UsageError) in an existing,
 // writable directory (InputError).

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "api/scene_digest.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "image/image_io.h"
@@ -16,7 +15,6 @@
 #include "render/progress.h"
 #include "render/render_identity.h"
 #include "scene/camera_selection.h"
-#include "scene/gltf_loader.h"
 #include "scene/selection_error.h"
 
 namespace lensrt {
@@ -77,10 +75,15 @@ Environment defaultEnvironment(const EnvironmentSpec& spec) {
   return makeEnvironment(sky);
 }
 
-RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_(options) {
+RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings)
+    : RenderJob(std::make_shared<const Scene>(
+                    SceneLoadOptions{options.scene, options.sceneIndex, options.limits}, warnings),
+                options, warnings) {}
+
+RenderJob::RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& options, Warnings& warnings)
+    : scene_(std::move(scene)), frame_(options) {
   const std::optional<Resolution>& res = options.resolution;
-  SceneDesc desc = asFlagError(
-      "--scene-index", [&] { return loadGltf(options.scene, options.sceneIndex, warnings, options.limits); });
+  const SceneDesc& desc = scene_->geometry().desc();
   const float defaultAspect = float(kDefaultWidth) / float(kDefaultHeight);
   const float aspectGuess = res && res->height > 0 ? float(res->width) / float(res->height) : defaultAspect;
   gltfCamera_ =
@@ -98,11 +101,11 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
     gltfCamera_ = asFlagError("--camera-node", [&] {
       return selectCamera(desc, options.cameraNode, float(width_) / float(height_));
     });
+  if (options.worldFromCamera) gltfCamera_.worldFromCamera = *options.worldFromCamera;
   environment_ = std::make_unique<Environment>(makeEnvironment(options.environment));
-
-  scene_ = std::make_unique<RenderScene>(std::move(desc));
-  materials_ = std::make_unique<MaterialTable>(scene_->desc());
-  lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+  const RenderScene& geometry = scene_->geometry();
+  const MaterialTable& materials = scene_->materials();
+  lights_ = std::make_unique<LightSet>(materials, *environment_, geometry.bounds());
   // Most glTF files leave the lighting to the viewer, which shows them under
   // a default environment; so does lensrt, rather than render black. A scene
   // whose own emitters are token ones (a few glowing parts) gets the sky too.
@@ -115,8 +118,8 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
     } else {
       const std::vector<Ray> probes = probeRays(gltfCamera_, float(width_) / float(height_));
       const double skyIrradiance = kPi * kDefaultSkyRadiance;
-      const std::optional<double> level = medianEmitterIrradiance(*scene_, *materials_, probes);
-      const bool punctual = std::any_of(scene_->desc().lights.begin(), scene_->desc().lights.end(),
+      const std::optional<double> level = medianEmitterIrradiance(geometry, materials, probes);
+      const bool punctual = std::any_of(desc.lights.begin(), desc.lights.end(),
                                         [](const PunctualLight& l) { return luminance(l.intensity) > 0; });
       const double fraction = punctual ? kWeakLightFraction : kWeakGlowFraction;
       if (level && *level < fraction * skyIrradiance)
@@ -127,7 +130,7 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
     }
     if (!why.empty()) {
       *environment_ = defaultEnvironment(options.environment);
-      lights_ = std::make_unique<LightSet>(*materials_, *environment_, scene_->bounds());
+      lights_ = std::make_unique<LightSet>(materials, *environment_, geometry.bounds());
       defaultEnvironment_ = true;
       if (!lights_->empty() && !options.quiet)
         warnings.warn(fmt::format(
@@ -143,7 +146,7 @@ RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings) : options_
   IntegratorSettings integratorSettings;
   integratorSettings.maxDepth = options.maxDepth;
   integrator_ =
-      std::make_unique<Integrator>(*scene_, *materials_, *lights_, *environment_, integratorSettings);
+      std::make_unique<Integrator>(geometry, materials, *lights_, *environment_, integratorSettings);
 }
 
 RenderJob::~RenderJob() = default;
@@ -154,7 +157,7 @@ std::string RenderJob::environmentDescription() const {
 
 std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warnings& warnings) const {
   const HitDistance hitDistance = [this](const Ray& ray) -> std::optional<double> {
-    const std::optional<SurfaceHit> hit = scene_->intersect(ray);
+    const std::optional<SurfaceHit> hit = scene_->geometry().intersect(ray);
     return hit ? std::optional<double>(hit->t) : std::nullopt;
   };
   try {
@@ -163,7 +166,7 @@ std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warn
     raster.height = height_;
     return lensrt::makeCamera(options, gltfCamera_, raster, hitDistance, warnings);
   } catch (const std::invalid_argument& e) {
-    throw InputError(options_.scene, "camera '" + gltfCamera_.name + "': " + e.what());
+    throw InputError(scene_->options().file, "camera '" + gltfCamera_.name + "': " + e.what());
   }
 }
 
@@ -198,15 +201,13 @@ RenderJobResult RenderJob::renderPasses(const Camera& camera, const RenderSettin
 }
 
 ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {
-  if (sceneDigest_.empty())
-    sceneDigest_ = sceneDigest(options_.scene, options_.environment.file, options_.limits.allowExternalFiles);
   std::string aovs;
   for (const std::string& c : filmChannels(settings.aovs)) aovs += (aovs.empty() ? "" : ",") + c;
   return {
-      {"lensrt:scene_sha256", sceneDigest_},
+      {"lensrt:scene_sha256", scene_->digest(frame_.environment.file)},
       {"lensrt:camera", camera.describe()},
       {"lensrt:settings", fmt::format("res={}x{} max_depth={} environment={} channels={}", width_, height_,
-                                      options_.maxDepth, environment_->describe(), aovs)},
+                                      frame_.maxDepth, environment_->describe(), aovs)},
       {"lensrt:seed", std::to_string(settings.seed)},
   };
 }
@@ -219,7 +220,7 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& se
       {"lensrt:spp", std::to_string(pixels ? out.cameraSamples / pixels : 0)},
       {"lensrt:camera_samples", std::to_string(out.cameraSamples)},
       {"lensrt:blocked_camera_rays", std::to_string(out.blockedCameraRays)},
-      {"lensrt:max_depth", std::to_string(options_.maxDepth)},
+      {"lensrt:max_depth", std::to_string(frame_.maxDepth)},
       {"lensrt:environment", environmentDescription()},
       {"lensrt:render_seconds", fmt::format("{:.3f}", result.seconds)},
       {"lensrt:version", LENSRT_VERSION},

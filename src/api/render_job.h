@@ -9,7 +9,9 @@
 
 #include "api/camera_options.h"
 #include "api/render_options.h"
+#include "api/scene.h"
 #include "camera/camera.h"
+#include "core/transform.h"
 #include "core/warnings.h"
 #include "image/image.h"
 #include "render/environment.h"
@@ -21,14 +23,20 @@
 
 namespace lensrt {
 
-struct SceneOptions {
-  std::string scene;  // .gltf / .glb
-  int sceneIndex = -1;
-  std::string cameraNode;
-  std::optional<Resolution> resolution;  // none: 640 wide, height from the camera's aspect
+// What a render sets up around a loaded scene.
+struct FrameOptions {
+  std::string cameraNode;                    // empty: the first camera, else a view framing the scene
+  std::optional<Transform> worldFromCamera;  // replaces the chosen camera's pose (looks down -Z, +Y up)
+  std::optional<Resolution> resolution;      // none: 640 wide, height from the camera's aspect
   EnvironmentSpec environment;
   int maxDepth = 8;
-  bool quiet = false;      // no "no lights" warning
+  bool quiet = false;  // no "no lights" warning
+};
+
+// A scene file and its frame, as `lensrt render` and `lensrt compare` take them.
+struct SceneOptions : FrameOptions {
+  std::string scene;  // .gltf / .glb
+  int sceneIndex = -1;
   SceneReadLimits limits;  // what the scene may make lensrt read and hold
 };
 
@@ -41,6 +49,8 @@ class RenderJob {
  public:
   // Loads the scene and builds everything but the camera. Throws InputError.
   RenderJob(const SceneOptions& options, Warnings& warnings);
+  // The same around a scene already loaded (which the job shares).
+  RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& frame, Warnings& warnings);
   ~RenderJob();
   RenderJob(const RenderJob&) = delete;
   RenderJob& operator=(const RenderJob&) = delete;
@@ -77,14 +87,12 @@ class RenderJob {
                          const std::string& commandLine) const;
 
  private:
-  SceneOptions options_;
-  mutable std::string sceneDigest_;  // computed on first use
+  std::shared_ptr<const Scene> scene_;
+  FrameOptions frame_;
   int width_ = 0, height_ = 0;
   CameraDesc gltfCamera_;
   std::unique_ptr<Environment> environment_;
   bool defaultEnvironment_ = false;
-  std::unique_ptr<RenderScene> scene_;
-  std::unique_ptr<MaterialTable> materials_;
   std::unique_ptr<LightSet> lights_;
   std::unique_ptr<Integrator> integrator_;
 };

@@ -1,17 +1,15 @@
 // `lensrt diff A B`: compare two images, idiff-style, optionally noise-aware.
 #include <fmt/core.h>
 
-#include <cmath>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "api/image_comparison.h"
 #include "api/output_file.h"
 #include "app/command.h"
 #include "app/option_checks.h"
 #include "core/error.h"
-#include "image/heatmap.h"
 #include "image/image_diff.h"
 #include "image/image_io.h"
 #include "image/noise_aware_diff.h"
@@ -19,20 +17,9 @@
 namespace lensrt {
 namespace {
 
-// Exit statuses, as idiff's.
-constexpr int kExitPass = 0, kExitWarn = 1, kExitFail = 2, kExitIncomparable = 3, kExitUnreadable = 4;
-// The verdict is the exit status.
-static_assert(int(DiffVerdict::Pass) == kExitPass && int(DiffVerdict::Warn) == kExitWarn &&
-              int(DiffVerdict::Fail) == kExitFail);
-
 struct DiffOptions {
   std::string fileA, fileB;
-  DiffThresholds thresholds;
-  std::string heatmap;
-  double heatmapMax = 0;
-  bool noiseAware = false;
-  NoiseAwareOptions noise;
-  int spp = 0;
+  ComparisonOptions comparison;
   bool json = false;
 };
 
@@ -76,66 +63,6 @@ constexpr const char* kDescription =
     "Exit status: 0 identical or within thresholds, 1 warning, 2 failure (also\n"
     "bad usage), 3 not comparable (size or channels differ), 4 unreadable file.";
 
-std::optional<int> sppFromMetadata(const ImageMetadata& metadata) {
-  const auto it = metadata.find("lensrt:spp");
-  if (it == metadata.end()) return std::nullopt;
-  try {
-    std::size_t used = 0;
-    const int spp = std::stoi(it->second, &used);
-    if (used == it->second.size() && spp > 0) return spp;
-  } catch (const std::exception&) {
-  }
-  return std::nullopt;
-}
-
-nlohmann::json numberOrNull(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-nlohmann::json statsJson(const DiffStats& s) {
-  return {{"channel", s.channel},
-          {"maxError", numberOrNull(s.maxError)},
-          {"maxPixel", {s.maxX, s.maxY}},
-          {"maxChannel", s.maxChannel},
-          {"meanError", numberOrNull(s.meanError)},
-          {"rmse", numberOrNull(s.rmse)},
-          {"psnr", numberOrNull(s.psnr)},
-          {"meanRelativeError", numberOrNull(s.meanRelativeError)},
-          {"failCount", s.failCount},
-          {"failPercent", s.failPercent},
-          {"warnCount", s.warnCount},
-          {"warnPercent", s.warnPercent}};
-}
-
-nlohmann::json noiseJson(const NoiseAwareReport& n, const NoiseAwareOptions& o) {
-  return {
-      {"pixelFalseAlarmRate", o.pixelFalseAlarmRate},
-      {"imageFalseAlarmRate", o.imageFalseAlarmRate},
-      {"relativeFloor", o.relativeFloor},
-      {"degreesOfFreedom", n.degreesOfFreedom},
-      {"criticalValue", n.criticalValue},
-      {"testedPixels", n.testedPixels},
-      {"zeroVariancePixels", n.zeroVariancePixels},
-      {"zeroVarianceFailures", n.zeroVarianceFailures},
-      {"statisticalFailures", n.statisticalFailures},
-      {"failingPixels", n.failingPixels},
-      {"expectedFailures", n.expectedFailures},
-      {"allowedFailures", n.allowedFailures},
-      {"fluxZ", {numberOrNull(n.fluxZ[0]), numberOrNull(n.fluxZ[1]), numberOrNull(n.fluxZ[2])}},
-      {"fluxRelativeDifference",
-       {numberOrNull(n.fluxRelativeDifference[0]), numberOrNull(n.fluxRelativeDifference[1]),
-        numberOrNull(n.fluxRelativeDifference[2])}},
-      {"gainZ", {numberOrNull(n.gainZ[0]), numberOrNull(n.gainZ[1]), numberOrNull(n.gainZ[2])}},
-      {"gainDecides", n.gainDecides},
-      {"gainEstimate",
-       {numberOrNull(n.gainEstimate[0]), numberOrNull(n.gainEstimate[1]), numberOrNull(n.gainEstimate[2])}},
-      {"fluxCriticalValue", n.fluxCriticalValue},
-      {"maxT", numberOrNull(n.maxT)},
-      {"maxPixel", {n.maxX, n.maxY}},
-      {"maxChannel", n.maxChannel},
-      {"pass", n.pass}};
-}
-
 void printText(const DiffOptions& o, const DiffReport& r, const std::optional<NoiseAwareReport>& noise) {
   fmt::print("Comparing \"{}\" and \"{}\" ({}x{}, {} channels)\n", o.fileA, o.fileB, r.width, r.height,
              r.channels.size());
@@ -150,8 +77,10 @@ void printText(const DiffOptions& o, const DiffReport& r, const std::optional<No
   row(r.overall);
   const auto& all = r.overall;
   fmt::print("  Max error = {:.6g} @ ({}, {}, {})\n", all.maxError, all.maxX, all.maxY, all.maxChannel);
-  fmt::print("  {} pixels ({:.3g}%) over warn {:g}\n", all.warnCount, all.warnPercent, o.thresholds.warn);
-  fmt::print("  {} pixels ({:.3g}%) over fail {:g}\n", all.failCount, all.failPercent, o.thresholds.fail);
+  fmt::print("  {} pixels ({:.3g}%) over warn {:g}\n", all.warnCount, all.warnPercent,
+             o.comparison.thresholds.warn);
+  fmt::print("  {} pixels ({:.3g}%) over fail {:g}\n", all.failCount, all.failPercent,
+             o.comparison.thresholds.fail);
   if (noise) {
     const auto& n = *noise;
     fmt::print(
@@ -159,7 +88,7 @@ void printText(const DiffOptions& o, const DiffReport& r, const std::optional<No
         "zero-variance by |A-B| > {:g}); expected {:.3g}, allowed {}; max |t| = {:.3g} @ ({}, {}, {})\n",
         n.criticalValue, n.degreesOfFreedom > 0 ? fmt::format("t, nu = {:g}", n.degreesOfFreedom) : "normal",
         n.failingPixels, n.testedPixels, n.statisticalFailures, n.zeroVarianceFailures, n.zeroVariancePixels,
-        o.noise.absoluteThreshold, n.expectedFailures, n.allowedFailures, n.maxT, n.maxX, n.maxY,
+        o.comparison.noise.absoluteThreshold, n.expectedFailures, n.allowedFailures, n.maxT, n.maxX, n.maxY,
         n.maxChannel);
     fmt::print(
         "  Noise-aware flux test: z(R,G,B) = {:.3g}, {:.3g}, {:.3g} (|z| > {:.3f} fails); relative flux "
@@ -173,96 +102,29 @@ void printText(const DiffOptions& o, const DiffReport& r, const std::optional<No
         n.gainDecides ? fmt::format("|z| > {:.3f} fails", n.fluxCriticalValue)
                       : std::string("reported only: the images' spp differ or are unknown"),
         n.gainEstimate[0], n.gainEstimate[1], n.gainEstimate[2]);
-    fmt::print("  Noise-aware: pixel alpha {:g}, image alpha {:g}: {}\n", o.noise.pixelFalseAlarmRate,
-               o.noise.imageFalseAlarmRate, n.pass ? "consistent with noise" : "NOT consistent with noise");
+    fmt::print("  Noise-aware: pixel alpha {:g}, image alpha {:g}: {}\n",
+               o.comparison.noise.pixelFalseAlarmRate, o.comparison.noise.imageFalseAlarmRate,
+               n.pass ? "consistent with noise" : "NOT consistent with noise");
   }
-}
-
-// Reports why no comparison was made: on stderr, and with --json also as
-// JSON on stdout so scripts always get a document.
-int refuse(const DiffOptions& o, int status, const std::string& message) {
-  fmt::print(stderr, "lensrt: error: {}\n", message);
-  if (o.json)
-    fmt::print(
-        "{}\n",
-        nlohmann::json{{"a", o.fileA}, {"b", o.fileB}, {"error", message}, {"exitStatus", status}}.dump(2));
-  return status;
 }
 
 int runDiff(const DiffOptions& o) {
-  if (!o.heatmap.empty()) noteCreatedFolder(createFolderFor(o.heatmap), false);
-  ImageMetadata metaA, metaB;
-  Image a, b;
-  try {
-    a = readImage(o.fileA, &metaA);
-    b = readImage(o.fileB, &metaB);
-  } catch (const InputError& e) {
-    return refuse(o, kExitUnreadable, e.what());
+  const ComparisonOptions& co = o.comparison;
+  if (!co.heatmap.empty()) noteCreatedFolder(createFolderFor(co.heatmap), false);
+  const Comparison c = compareImageFiles(o.fileA, o.fileB, co);
+  if (!c.error.empty()) {
+    // On stderr, and with --json also as JSON on stdout so scripts always get a document.
+    fmt::print(stderr, "lensrt: error: {}\n", c.error);
+    if (o.json) fmt::print("{}\n", c.json.dump(2));
+    return c.exitStatus;
   }
-  if (const auto why = incomparableReason(a, b))
-    return refuse(o, kExitIncomparable,
-                  fmt::format("\"{}\" and \"{}\" are not comparable: {}", o.fileA, o.fileB, *why));
-
-  const DiffReport report = diffImages(a, b, o.thresholds);
-  DiffVerdict verdict = report.verdict;
-  std::optional<NoiseAwareReport> noise;
-  NoiseAwareOptions noiseOptions;
-  if (o.noiseAware) {
-    if (!hasVarianceChannels(a) || !hasVarianceChannels(b))
-      return refuse(o, kExitIncomparable,
-                    fmt::format("\"{}\" and \"{}\" are not comparable noise-aware: both need R,G,B and "
-                                "variance.R/G/B channels (lensrt render --aov variance)",
-                                o.fileA, o.fileB));
-    noiseOptions = o.noise;
-    noiseOptions.absoluteThreshold = o.thresholds.fail;
-    noiseOptions.samplesA = o.spp > 0 ? o.spp : sppFromMetadata(metaA).value_or(0);
-    noiseOptions.samplesB = o.spp > 0 ? o.spp : sppFromMetadata(metaB).value_or(0);
-    noise = noiseAwareDiff(a, b, noiseOptions);
-    const double maxError = report.overall.maxError;
-    verdict = !noise->pass || maxError > o.thresholds.hardFail ? DiffVerdict::Fail
-              : maxError > o.thresholds.hardWarn               ? DiffVerdict::Warn
-                                                               : DiffVerdict::Pass;
-  }
-
-  if (!o.heatmap.empty()) {
-    // Noise-aware, the map shows |t| with the pixel threshold mid-scale, so
-    // failing pixels are the green-to-yellow half.
-    HeatmapOptions options;
-    options.scaleMax = o.heatmapMax > 0 ? o.heatmapMax : noise ? 2 * noise->criticalValue : 0.0;
-    if (noise) options.title = fmt::format("|t|, fail > {:.3g}", noise->criticalValue);
-    const std::vector<float> values = noise ? perPixelMaxT(a, b, noiseOptions) : perPixelMaxError(a, b);
-    writeImage(o.heatmap, makeHeatmap(values, a.width, a.height, options), {});
-  }
-
-  const int status = int(verdict);
   if (o.json) {
-    nlohmann::json j{{"a", o.fileA},
-                     {"b", o.fileB},
-                     {"width", report.width},
-                     {"height", report.height},
-                     {"thresholds",
-                      {{"fail", o.thresholds.fail},
-                       {"failRelative", o.thresholds.failRelative},
-                       {"failPercent", o.thresholds.failPercent},
-                       {"hardFail", numberOrNull(o.thresholds.hardFail)},
-                       {"warn", o.thresholds.warn},
-                       {"warnRelative", o.thresholds.warnRelative},
-                       {"warnPercent", o.thresholds.warnPercent},
-                       {"hardWarn", numberOrNull(o.thresholds.hardWarn)},
-                       {"relativeFloor", o.thresholds.relativeFloor}}},
-                     {"channels", nlohmann::json::array()},
-                     {"overall", statsJson(report.overall)},
-                     {"noiseAware", noise ? noiseJson(*noise, o.noise) : nlohmann::json(nullptr)},
-                     {"verdict", verdictName(verdict)},
-                     {"exitStatus", status}};
-    for (const auto& s : report.channels) j["channels"].push_back(statsJson(s));
-    if (!o.heatmap.empty()) j["heatmap"] = o.heatmap;
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", c.json.dump(2));
   } else {
-    printText(o, report, noise);
-    fmt::print("{}\n", verdictName(verdict));
+    printText(o, *c.report, c.noise);
+    fmt::print("{}\n", verdictName(c.verdict));
   }
-  return status;
+  return c.exitStatus;
 }
 
 }  // namespace
@@ -272,7 +134,7 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
       app.add_subcommand("diff", "Compare two images; exit 0 pass, 1 warn, 2 fail, 3/4 see --help");
   sub->description(kDescription);
   auto o = std::make_shared<DiffOptions>();
-  auto& t = o->thresholds;
+  auto& t = o->comparison.thresholds;
   sub->add_option("A", o->fileA, "First image")->required();
   sub->add_option("B", o->fileB, "Second image")->required();
   // Every check names its range in a few digits (CLI11's NonNegativeNumber
@@ -304,7 +166,7 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
       ->capture_default_str()
       ->check(numberFrom(0, "a pixel value", true));
   sub->add_option(
-         "--heatmap", o->heatmap,
+         "--heatmap", o->comparison.heatmap,
          "Write a false-colour map of the per-pixel max |A-B| (noise-aware: max |t|) with a labelled "
          "colour bar (.png/.jpg/.exr)")
       ->check(CLI::Validator(
@@ -312,23 +174,26 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
             return isWritableImageExtension(file) ? std::string() : "expects a .png, .jpg or .exr file";
           },
           "IMAGE"));
-  sub->add_option("--heatmap-max", o->heatmapMax,
+  sub->add_option("--heatmap-max", o->comparison.heatmapMax,
                   "Value at the top of the heatmap scale (default: the max error; noise-aware: twice the |t| "
                   "threshold)")
       ->check(numberFrom(0, "0 for the default"));
-  sub->add_flag("--noise-aware", o->noiseAware,
+  sub->add_flag("--noise-aware", o->comparison.noiseAware,
                 "Judge by per-pixel t-tests against the variance AOVs (see above)");
-  sub->add_option("--pixel-alpha", o->noise.pixelFalseAlarmRate, "Noise-aware: per-pixel false-alarm rate")
+  sub->add_option("--pixel-alpha", o->comparison.noise.pixelFalseAlarmRate,
+                  "Noise-aware: per-pixel false-alarm rate")
       ->capture_default_str()
       ->check(numberIn(1e-12, 0.5, "a probability"));
-  sub->add_option("--image-alpha", o->noise.imageFalseAlarmRate, "Noise-aware: image-level false-alarm rate")
+  sub->add_option("--image-alpha", o->comparison.noise.imageFalseAlarmRate,
+                  "Noise-aware: image-level false-alarm rate")
       ->capture_default_str()
       ->check(numberIn(1e-12, 0.5, "a probability"));
-  sub->add_option("--variance-floor", o->noise.relativeFloor,
+  sub->add_option("--variance-floor", o->comparison.noise.relativeFloor,
                   "Noise-aware: standard-deviation floor as a fraction of the pixel value")
       ->capture_default_str()
       ->check(numberFrom(0, "a fraction of the pixel value"));
-  sub->add_option("--spp", o->spp, "Noise-aware: samples per pixel of both (default: lensrt:spp metadata)")
+  sub->add_option("--spp", o->comparison.spp,
+                  "Noise-aware: samples per pixel of both (default: lensrt:spp metadata)")
       ->check(integerIn(1, 1 << 24, "samples per pixel"));
   sub->add_flag("--json", o->json, "Print all figures as JSON");
   return [o]() { return runDiff(*o); };

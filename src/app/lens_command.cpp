@@ -13,6 +13,7 @@
 
 #include "api/lens_info.h"
 #include "api/lens_loading.h"
+#include "api/lens_view.h"
 #include "app/lens_subcommands.h"
 #include "app/option_checks.h"
 #include "core/constants.h"
@@ -38,48 +39,17 @@ struct InfoOptions {
   bool json = false;
 };
 
-struct Sensor {
-  double width = 36.0, height = 24.0;
-};
-
-Sensor parseSensor(const std::string& text) {
-  const std::size_t x = text.find_first_of("xX");
-  try {
-    if (x != std::string::npos) {
-      std::size_t used1 = 0, used2 = 0;
-      const std::string a = text.substr(0, x), b = text.substr(x + 1);
-      const Sensor s{std::stod(a, &used1), std::stod(b, &used2)};
-      if (used1 == a.size() && used2 == b.size() && s.width > 0 && s.height > 0 && s.width < 1e4 &&
-          s.height < 1e4)
-        return s;
-    }
-  } catch (const std::exception&) {
-  }
-  throw CLI::ValidationError("--sensor", "expected WIDTHxHEIGHT in mm, e.g. 36x24, got '" + text + "'");
-}
-
-double parseFocusMetres(const std::string& text) {
-  if (text == "inf" || text == "infinity") return kInfinity;
-  try {
-    std::size_t used = 0;
-    const double m = std::stod(text, &used);
-    if (used == text.size() && m > 0 && std::isfinite(m)) return m;
-  } catch (const std::exception&) {
-  }
-  throw CLI::ValidationError("--focus", "expected a distance in metres > 0 or 'inf', got '" + text + "'");
-}
-
 std::string metresText(double mm) {
   return std::isfinite(mm) ? fmt::format("{:.4g} m", mm / 1000.0) : "infinity";
 }
 
-int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor& sensor, double focusM,
+int printInfo(const InfoOptions& o, const LensPrescription& design, const Vec2d& sensor, double focusM,
               Warnings& warnings, const std::vector<std::string>& warningList);
 
 int runInfo(const InfoOptions& o) {
-  const Sensor sensor = parseSensor(o.sensor);
+  const Vec2d sensor = parseSensorSize(o.sensor);
   const double focusM = parseFocusMetres(o.focus);
-  if (o.fNumber && !(*o.fNumber > 0)) throw CLI::ValidationError("--fstop", "must be a positive f-number");
+  checkFNumber(o.fNumber);
   if (o.circleOfConfusionMm && !(*o.circleOfConfusionMm > 0))
     throw CLI::ValidationError("--coc", "must be positive");
 
@@ -94,11 +64,11 @@ int runInfo(const InfoOptions& o) {
       user, [&] { return printInfo(o, user.prescription, sensor, focusM, warnings, warningList); });
 }
 
-int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor& sensor, double focusM,
+int printInfo(const InfoOptions& o, const LensPrescription& design, const Vec2d& sensor, double focusM,
               Warnings& warnings, const std::vector<std::string>& warningList) {
   LensInfoSettings settings;
-  settings.sensorWidthMm = sensor.width;
-  settings.sensorHeightMm = sensor.height;
+  settings.sensorWidthMm = sensor.x;
+  settings.sensorHeightMm = sensor.y;
   settings.fNumber = o.fNumber;
   settings.focusMetres = focusM;
   settings.circleOfConfusionMm = o.circleOfConfusionMm;
@@ -132,7 +102,7 @@ int printInfo(const InfoOptions& o, const LensPrescription& design, const Sensor
              p.entrancePupilDiameter);
   fmt::print("  exit pupil            at {:.3f}, diameter {:.3f} mm\n", p.exitPupilZ, p.exitPupilDiameter);
   fmt::print("  f-number              f/{:.3g}  (widest f/{:.3g})\n", p.fNumber, info.widestFNumber);
-  fmt::print("Sensor {:g} x {:g} mm, focused at {} from the entrance pupil:\n", sensor.width, sensor.height,
+  fmt::print("Sensor {:g} x {:g} mm, focused at {} from the entrance pupil:\n", sensor.x, sensor.y,
              metresText(focusMm));
   fmt::print("  film distance         {:.4f} mm behind the last vertex (paraxial estimate {:.4f})\n",
              info.filmDistanceMm, conj.filmDistance);

@@ -1,6 +1,5 @@
 // `lensrt render SCENE -o OUT`: path-trace a glTF scene to an image.
 #include <fmt/core.h>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -18,6 +17,7 @@
 #include "api/output_file.h"
 #include "api/render_job.h"
 #include "api/render_options.h"
+#include "api/render_request.h"
 #include "app/camera_flags.h"
 #include "app/command.h"
 #include "app/option_checks.h"
@@ -52,22 +52,6 @@ struct RenderArgs {
   bool quiet = false;
   CameraOptions camera;
 };
-
-// The image is held in memory as floats (and copied once more to write it)
-// beside the pixels' running sums:
-// a --res this machine cannot hold is a usage error, not a crash mid-render.
-void checkImageFitsInMemory(int width, int height, std::size_t channels) {
-  // Two float copies of the image, and the running sums of every pixel.
-  const double bytes = double(width) * double(height) *
-                       (2.0 * double(channels) * sizeof(float) + PixelAccumulator::kStateBytes);
-  const double physical = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
-  constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
-  if (physical > 0 && bytes > physical)
-    throw CLI::ValidationError(
-        "--res", fmt::format("a {}x{} image with {} channels needs about {:.1f} GiB of memory, more than the "
-                             "{:.1f} GiB this machine has",
-                             width, height, channels, bytes / kGiB, physical / kGiB));
-}
 
 // --crop X0,X1,Y0,Y1 or --tile I/N: the part of the frame to render.
 PixelRegion partOfFrame(const RenderArgs& args, int width, int height) {

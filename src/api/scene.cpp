@@ -1,0 +1,37 @@
+#include "api/scene.h"
+
+#include "api/scene_digest.h"
+#include "core/error.h"
+#include "scene/gltf_loader.h"
+#include "scene/selection_error.h"
+
+namespace lensrt {
+namespace {
+
+// Asking for a scene the file does not have is a wrong flag value (exit 2),
+// not a broken file.
+SceneDesc loadScene(const SceneLoadOptions& options, Warnings& warnings) {
+  try {
+    return loadGltf(options.file, options.sceneIndex, warnings, options.limits);
+  } catch (const SelectionError& e) {
+    throw UsageError("--scene-index", e.file() + ": " + e.message());
+  }
+}
+
+}  // namespace
+
+Scene::Scene(const SceneLoadOptions& options, Warnings& warnings)
+    : options_(options), geometry_(loadScene(options, warnings)), materials_(geometry_.desc()) {}
+
+std::string Scene::digest(const std::string& environmentMap) const {
+  const std::lock_guard lock(digestMutex_);
+  auto found = digests_.find(environmentMap);
+  if (found == digests_.end())
+    found = digests_
+                .emplace(environmentMap,
+                         sceneDigest(options_.file, environmentMap, options_.limits.allowExternalFiles))
+                .first;
+  return found->second;
+}
+
+}  // namespace lensrt

@@ -1,0 +1,49 @@
+// A glTF scene loaded once and rendered many times: the geometry and its
+// BVH, the materials and the glTF's cameras. What varies per render (the
+// raster, the environment, the camera, the settings) is a RenderJob's
+// (api/render_job.h); Python's lensrt.Scene is this class.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "core/warnings.h"
+#include "render/material_eval.h"
+#include "scene/render_scene.h"
+#include "scene/scene_file_access.h"
+
+namespace lensrt {
+
+struct SceneLoadOptions {
+  std::string file;        // .gltf / .glb
+  int sceneIndex = -1;     // -1: the file's default scene
+  SceneReadLimits limits;  // what the scene may make lensrt read and hold
+};
+
+class Scene {
+ public:
+  // Reads the file and builds the BVH and materials. Throws InputError for a
+  // bad file, UsageError ("--scene-index") for a scene the file lacks.
+  Scene(const SceneLoadOptions& options, Warnings& warnings);
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  const SceneLoadOptions& options() const { return options_; }
+  const RenderScene& geometry() const { return geometry_; }
+  const MaterialTable& materials() const { return materials_; }
+
+  // Hex SHA-256 of the scene's files and `environmentMap` (api/scene_digest.h),
+  // computed once per map; safe to call from several threads.
+  std::string digest(const std::string& environmentMap) const;
+
+ private:
+  SceneLoadOptions options_;
+  RenderScene geometry_;
+  MaterialTable materials_;
+  mutable std::mutex digestMutex_;
+  mutable std::map<std::string, std::string> digests_;
+};
+
+}  // namespace lensrt
