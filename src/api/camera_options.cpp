@@ -108,8 +108,40 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
                                     const HitDistance& hitDistance);
 }  // namespace
 
+void checkCameraOptions(const CameraOptions& o) {
+  const auto oneOf = [](const char* flag, const std::string& value,
+                        std::initializer_list<const char*> names) {
+    std::string list;
+    for (const char* n : names) {
+      if (value == n) return;
+      list.append(list.empty() ? "" : ", ").append(n);
+    }
+    throw UsageError(flag, "expected one of " + list + ", got '" + value + "'");
+  };
+  const auto within = [](const char* flag, double v, double lo, double hi, const char* what) {
+    if (!(v >= lo && v <= hi))
+      throw UsageError(flag, fmt::format("{:g} is not in [{:g}, {:g}] ({})", v, lo, hi, what));
+  };
+  oneOf("--camera", o.model, {"pinhole", "thin", "thick", "lens"});
+  if (o.fNumber) within("--fstop", *o.fNumber, 0.5, 1024.0, "the f-number");
+  parseFocus(o.focus);
+  if (!o.focusPixel.empty()) parseFocusPixel(o.focusPixel);
+  parseSensor(o.sensor);
+  if (o.blades < 0 || o.blades > 64 || o.blades == 1 || o.blades == 2)
+    throw UsageError("--blades", fmt::format("{} blades: an aperture needs 0 (round) or 3 to 64", o.blades));
+  within("--blade-rotation", o.bladeRotationDegrees, -360.0, 360.0, "degrees");
+  if (o.focalLengthMm) within("--focal-length", *o.focalLengthMm, 0.1, 10000.0, "mm");
+  oneOf("--exposure", o.exposure, {"normalized", "physical"});
+  if (!o.shutter.empty()) parseShutter(o.shutter);
+  if (o.iso) within("--iso", *o.iso, 1.0, 1e7, "ISO speed");
+  oneOf("--dispersion", o.dispersion, {"on", "off"});
+  if (!o.coatings.empty()) oneOf("--coatings", o.coatings, {"none", "single", "multi"});
+  if (!o.film.empty()) oneOf("--film", o.film, {"radiance", "irradiance"});
+}
+
 std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& gltf, FilmGeometry rasterFilm,
                                    const HitDistance& hitDistance, Warnings& warnings) {
+  checkCameraOptions(o);
   const FilmGeometry film = cameraFilm(o, rasterFilm.width, rasterFilm.height);
   if (gltf.orthographic) {
     // Parallel rays are the pinhole model's radiance film without a lens; a

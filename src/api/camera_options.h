@@ -69,7 +69,11 @@ FilmGeometry cameraFilm(const CameraOptions& options, int width, int height);
 // the ray hits; nullopt when it hits nothing. Used for --focus auto.
 using HitDistance = std::function<std::optional<double>(const Ray&)>;
 
-// Builds the model. `film` gives the raster size; its sensor is replaced by
+// Every value in range and every name known, as the command line's flag
+// checks have it (the Python module has no such checks). Throws UsageError.
+void checkCameraOptions(const CameraOptions& options);
+
+// Builds the model (checkCameraOptions first). `film` gives the raster size; its sensor is replaced by
 // cameraFilm's. With --lens the simpler models are derived from the lens's
 // paraxial data (thin: f = EFL and its f-number; thick: its cardinal points and
 // pupils; pinhole: the lens's field of view at that focus). Without it, f is

@@ -1,0 +1,22 @@
+"""lensrt: render glTF scenes through real camera optics, into numpy arrays.
+
+    import lensrt
+    lens = lensrt.Lens("dgauss-50mm")
+    scene = lensrt.Scene("scenes/dof_row.gltf")
+    image = scene.render(camera="lens", lens=lens.file, fstop=2.8, res=(320, 180), spp=16)
+    image.rgb          # H x W x 3 float32, linear
+    image.write("out/dof_row.exr")
+
+Lens, Scene, RenderResult and diff are the command line's `lens info`,
+`render` and `diff`, on the same library: the same seed gives the same bits.
+"""
+
+from collections import namedtuple as _namedtuple
+
+TraceResult = _namedtuple("TraceResult", ["points", "directions", "weights", "passed"])
+TraceResult.__doc__ = """Lens.trace's result: exit points (N x 3, mm), unit directions (N x 3),
+transmitted fractions (N) and which rays passed (N, bool)."""
+
+from ._lensrt import Lens, RenderResult, Scene, __version__, diff  # noqa: E402
+
+__all__ = ["Lens", "Scene", "RenderResult", "TraceResult", "diff", "__version__"]

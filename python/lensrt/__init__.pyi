@@ -1,0 +1,144 @@
+# Type stubs of lensrt (the compiled lensrt._lensrt and TraceResult), so that
+# IDEs complete the keywords of Scene.render and friends. Units in the names:
+# _mm millimetres, _m metres, _deg degrees, _nm nanometres.
+import os
+from typing import Any, Callable, NamedTuple, Sequence
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+_Path = str | os.PathLike[str]
+_Distance = float | str  # metres, or "inf"
+_Sensor = str | tuple[float, float]  # "WxH" mm or (w, h) mm
+
+class TraceResult(NamedTuple):
+    points: npt.NDArray[np.float64]  # N x 3, mm, where rays leave the front surface
+    directions: npt.NDArray[np.float64]  # N x 3, unit
+    weights: npt.NDArray[np.float64]  # N, transmitted fraction
+    passed: npt.NDArray[np.bool_]  # N
+
+class Lens:
+    def __init__(self, lens: _Path) -> None: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def file(self) -> str: ...
+    @property
+    def surfaces(self) -> list[dict[str, Any]]: ...
+    def info(
+        self,
+        fstop: float | None = None,
+        focus: _Distance = "inf",
+        sensor: _Sensor = "36x24",
+        coc: float | None = None,
+        coatings: str = "none",
+    ) -> dict[str, Any]: ...
+    def trace(
+        self,
+        origins: npt.ArrayLike,
+        directions: npt.ArrayLike,
+        wavelength_nm: float = 587.5618,
+        fstop: float | None = None,
+        coatings: str | None = None,
+    ) -> TraceResult: ...
+    def focus(self, distance_m: _Distance) -> float: ...
+    def spot(
+        self,
+        field_deg: float = 0.0,
+        fstop: float | None = None,
+        focus: _Distance = "inf",
+        rays: int = 41,
+        wavelength_nm: float = 587.5618,
+        coatings: str | None = None,
+    ) -> npt.NDArray[np.float64]: ...
+    def relative_illumination(
+        self, fstop: float | None = None, focus: _Distance = "inf", sensor: _Sensor = "36x24", points: int = 33
+    ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+    def distortion(
+        self, fstop: float | None = None, focus: _Distance = "inf", sensor: _Sensor = "36x24", points: int = 41
+    ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+
+class RenderResult:
+    @property
+    def rgb(self) -> npt.NDArray[np.float32]: ...  # H x W x 3, a view
+    @property
+    def channels(self) -> dict[str, npt.NDArray[np.float32]]: ...  # each H x W, a view
+    @property
+    def metadata(self) -> dict[str, str]: ...
+    @property
+    def seconds(self) -> float: ...
+    @property
+    def spp(self) -> int: ...
+    @property
+    def finished(self) -> bool: ...
+    @property
+    def camera(self) -> str: ...
+    def write(self, path: _Path) -> None: ...
+
+class Scene:
+    def __init__(
+        self,
+        file: _Path,
+        scene_index: int | None = None,
+        allow_external_files: bool = False,
+        max_texture_memory: int | None = None,
+    ) -> None: ...
+    @property
+    def file(self) -> str: ...
+    def render(
+        self,
+        *,
+        camera: str = "pinhole",
+        lens: _Path | None = None,
+        fstop: float | None = None,
+        focus: _Distance = "auto",
+        focus_pixel: tuple[float, float] | str | None = None,
+        sensor: _Sensor = "full-frame",
+        res: tuple[int, int] | int | str | None = None,
+        spp: int = 16,
+        seed: int = 0,
+        aov: Sequence[str] | str = (),
+        env: _Path | float | None = None,
+        env_rotate: float = 0.0,
+        env_intensity: float = 1.0,
+        max_depth: int = 8,
+        camera_node: str | int | None = None,
+        camera_to_world: npt.ArrayLike | None = None,
+        threads: int = 0,
+        crop: tuple[int, int, int, int] | None = None,
+        blades: int = 0,
+        blade_rotation: float = 0.0,
+        aperture_mask: _Path | None = None,
+        focal_length: float | None = None,
+        exposure: str = "normalized",
+        shutter: float | str | None = None,
+        iso: float | None = None,
+        dispersion: str | bool = "on",
+        coatings: str | None = None,
+        film: str | None = None,
+        progress: Callable[[int, int], bool | None] | None = None,
+    ) -> RenderResult: ...
+
+def diff(
+    a: _Path | RenderResult,
+    b: _Path | RenderResult,
+    *,
+    fail: float | None = None,
+    fail_relative: float | None = None,
+    fail_percent: float | None = None,
+    hard_fail: float | None = None,
+    warn: float | None = None,
+    warn_relative: float | None = None,
+    warn_percent: float | None = None,
+    hard_warn: float | None = None,
+    relative_floor: float | None = None,
+    noise_aware: bool = False,
+    pixel_alpha: float | None = None,
+    image_alpha: float | None = None,
+    variance_floor: float | None = None,
+    spp: int | None = None,
+    heatmap: _Path | None = None,
+    heatmap_max: float | None = None,
+) -> dict[str, Any]: ...

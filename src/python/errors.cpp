@@ -1,0 +1,27 @@
+#include "python/errors.h"
+
+#include <filesystem>
+
+#include "core/error.h"
+
+namespace lensrt::python {
+
+void registerErrors(pybind11::module_&) {
+  pybind11::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const InputError& e) {
+      // The file named by the error may be a library lens or an option's
+      // value rather than a path: only an absent path is "not found".
+      std::error_code ec;
+      const bool missing = !e.file().empty() && e.line() == 0 && !std::filesystem::exists(e.file(), ec) &&
+                           (e.message().find("no such") != std::string::npos ||
+                            e.message().find("not found") != std::string::npos);
+      PyErr_SetString(missing ? PyExc_FileNotFoundError : PyExc_ValueError, e.what());
+    } catch (const UsageError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+}
+
+}  // namespace lensrt::python

@@ -1,0 +1,313 @@
+// lensrt.Lens: a lens from the library or a file, its first-order data
+// (`lens info --json`), its surfaces, exact ray traces and the curves of
+// `lens plot`, as numbers and numpy arrays.
+#include <fmt/core.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "api/lens_info.h"
+#include "api/lens_loading.h"
+#include "api/lens_view.h"
+#include "core/constants.h"
+#include "optics/coating.h"
+#include "optics/distortion.h"
+#include "optics/focus.h"
+#include "optics/lens_system.h"
+#include "optics/relative_illumination.h"
+#include "optics/spot_diagram.h"
+#include "python/arguments.h"
+#include "python/bindings.h"
+#include "python/json_objects.h"
+
+namespace lensrt::python {
+namespace {
+
+// Python warnings for the optics' warnings (a stop-down clamped, ...).
+class WarningList {
+ public:
+  Warnings& sink() { return warnings_; }
+  void emit() const {
+    for (const std::string& w : list_)
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
+  }
+
+ private:
+  std::vector<std::string> list_;
+  Warnings warnings_{[this](const std::string& w) { list_.push_back(w); }};
+};
+
+std::optional<Coating> toCoating(py::handle value) {
+  if (value.is_none()) return std::nullopt;
+  const std::string name = toText(value, "coatings");
+  const std::optional<Coating> coating = parseCoating(name);
+  if (!coating) throw py::value_error("coatings: expected 'none', 'single' or 'multi', got '" + name + "'");
+  return coating;
+}
+
+class PyLens {
+ public:
+  explicit PyLens(py::handle spec) : lens_(loadUserLens(toPathText(spec, "lens"), LENSRT_LENS_DIR)) {}
+
+  const UserLens& user() const { return lens_; }
+
+  // The lens stopped down and focused, with the sensor that sets the field.
+  LensView view(py::handle fstop, py::handle focus, py::handle sensor, py::handle coatings,
+                WarningList& warnings) const {
+    LensViewOptions o;
+    o.fNumber = toOptionalDouble(fstop, "fstop");
+    o.focus = toDistanceText(focus, "focus");
+    o.sensor = toSensorText(sensor, "sensor");
+    const std::optional<Coating> coating = toCoating(coatings);
+    o.coatings = coating ? coatingName(*coating) : "";
+    return prepareLensView(lens_, o, warnings.sink());
+  }
+
+  py::object info(py::handle fstop, py::handle focus, py::handle sensor, py::handle coc,
+                  py::handle coatings) const {
+    const Vec2d size = parseSensorSize(toSensorText(sensor, "sensor"));
+    LensInfoSettings settings;
+    settings.sensorWidthMm = size.x;
+    settings.sensorHeightMm = size.y;
+    settings.fNumber = toOptionalDouble(fstop, "fstop");
+    checkFNumber(settings.fNumber);
+    settings.focusMetres = parseFocusMetres(toDistanceText(focus, "focus"));
+    settings.circleOfConfusionMm = toOptionalDouble(coc, "coc");
+    if (settings.circleOfConfusionMm && !(*settings.circleOfConfusionMm > 0))
+      throw UsageError("--coc", "must be positive");
+    settings.coating = toCoating(coatings).value_or(Coating::None);
+    std::vector<std::string> list;
+    Warnings warnings([&](const std::string& w) { list.push_back(w); });
+    requireRealImage(lens_);
+    const nlohmann::json json = withLensErrors(lens_, [&] {
+      const LensInfo info = lensInfo(lens_.prescription, settings, warnings);
+      return lensInfoJson(info, list);
+    });
+    for (const std::string& w : list)
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
+    return toPython(json);
+  }
+
+  py::list surfaces() const {
+    py::list out;
+    double z = 0.0;
+    for (const Surface& s : lens_.prescription.surfaces) {
+      py::dict d;
+      d["radius_mm"] = s.radius;
+      d["thickness_mm"] = s.thickness;
+      d["aperture_diameter_mm"] = s.apertureDiameter;
+      d["z_mm"] = z;
+      d["stop"] = s.isStop;
+      d["n_d"] = s.medium.nd;
+      d["v_d"] = s.medium.vd;
+      d["glass"] = s.medium.isAir() ? std::string("air") : s.medium.glass;
+      d["conic"] = s.conic;
+      d["aspheric"] = std::vector<double>(s.aspheric.begin(), s.aspheric.end());
+      out.append(d);
+      z += s.thickness;
+    }
+    return out;
+  }
+
+  py::object trace(py::handle originsIn, py::handle directionsIn, py::handle wavelengthIn, py::handle fstop,
+                   py::handle coatings) const {
+    const auto origins = toFiniteMatrix(originsIn, "origins", 3);
+    const auto directions = toFiniteMatrix(directionsIn, "directions", 3, origins.shape(0));
+    const double wavelength = toDouble(wavelengthIn, "wavelength_nm");
+    if (wavelength < 300.0 || wavelength > 1000.0)
+      throw py::value_error(fmt::format("wavelength_nm: expected 300 to 1000 nm, got {:g}", wavelength));
+    WarningList warnings;
+    const std::optional<double> f = toOptionalDouble(fstop, "fstop");
+    checkFNumber(f);
+    const LensSystem lens = withLensErrors(lens_, [&] {
+      return LensSystem(f ? stopDown(lens_.prescription, *f, warnings.sink()) : lens_.prescription,
+                        toCoating(coatings));
+    });
+    warnings.emit();
+    const py::ssize_t n = origins.shape(0);
+    const double* o = origins.data();
+    const double* d = directions.data();
+    for (py::ssize_t i = 0; i < n; ++i)
+      if (!(d[3 * i + 2] < 0.0))
+        throw py::value_error(fmt::format(
+            "directions: row {} does not point toward the lens's front (rays leave the film with z < 0)", i));
+    py::array_t<double> points({n, py::ssize_t(3)}), exits({n, py::ssize_t(3)});
+    py::array_t<double> weights(n);
+    py::array_t<bool> passed(n);
+    double* p = points.mutable_data();
+    double* e = exits.mutable_data();
+    double* w = weights.mutable_data();
+    bool* ok = passed.mutable_data();
+    {
+      const py::gil_scoped_release release;
+      // Chunks of the batched trace, bit for bit traceFromFilm on each ray.
+      constexpr py::ssize_t kChunk = 4096;
+      tbb::parallel_for(py::ssize_t(0), (n + kChunk - 1) / kChunk, [&](py::ssize_t chunk) {
+        const py::ssize_t first = chunk * kChunk, count = std::min(kChunk, n - first);
+        std::vector<LensRay> rays(count);
+        std::vector<std::optional<LensRay>> out(count);
+        for (py::ssize_t i = 0; i < count; ++i) {
+          const double* oi = o + 3 * (first + i);
+          const double* di = d + 3 * (first + i);
+          rays[i].origin = {oi[0], oi[1], oi[2]};
+          rays[i].direction = {di[0], di[1], di[2]};
+        }
+        if (wavelength == kWavelengthDNm) {
+          lens.traceFromFilm(rays, out);
+        } else {
+          const std::vector<double> wavelengths(count, wavelength);
+          lens.traceFromFilm(rays, wavelengths, out);
+        }
+        for (py::ssize_t i = 0; i < count; ++i) {
+          const py::ssize_t k = first + i;
+          const std::optional<LensRay>& r = out[i];
+          ok[k] = r.has_value();
+          const LensRay hit = r.value_or(LensRay{{0, 0, 0}, {0, 0, 0}, 0.0});
+          p[3 * k] = hit.origin.x, p[3 * k + 1] = hit.origin.y, p[3 * k + 2] = hit.origin.z;
+          e[3 * k] = hit.direction.x, e[3 * k + 1] = hit.direction.y, e[3 * k + 2] = hit.direction.z;
+          w[k] = r ? hit.transmittance : 0.0;
+        }
+      });
+    }
+    const py::object traceResult = py::module_::import("lensrt").attr("TraceResult");
+    return traceResult(points, exits, weights, passed);
+  }
+
+  double focus(py::handle distance) const {
+    const double mm = parseFocusDistanceMm(toDistanceText(distance, "distance_m"));
+    requireRealImage(lens_);
+    return withLensErrors(lens_, [&] { return focusFilmDistance(LensSystem(lens_.prescription), mm); });
+  }
+
+  py::array_t<double> spot(py::handle field, py::handle fstop, py::handle focus, py::handle rays,
+                           py::handle wavelengthIn, py::handle coatings) const {
+    const double angle = toDouble(field, "field_deg");
+    if (!(std::abs(angle) < 90.0))
+      throw py::value_error("field_deg: expected an angle from the axis under 90 deg");
+    const int grid = int(toInteger(rays, "rays", 2, 4096));
+    const double wavelength = toDouble(wavelengthIn, "wavelength_nm");
+    WarningList warnings;
+    const LensView v = view(fstop, focus, py::str("36x24"), coatings, warnings);
+    warnings.emit();
+    const SpotDiagram s = withLensErrors(lens_, [&] {
+      return spotDiagram(v.lens, {angle, v.focusMm}, v.filmDistanceMm, grid, wavelength);
+    });
+    py::array_t<double> out({py::ssize_t(s.points.size()), py::ssize_t(2)});
+    double* o = out.mutable_data();
+    for (std::size_t i = 0; i < s.points.size(); ++i) o[2 * i] = s.points[i].x, o[2 * i + 1] = s.points[i].y;
+    return out;
+  }
+
+  py::tuple relativeIllumination(py::handle fstop, py::handle focus, py::handle sensor,
+                                 py::handle points) const {
+    const int count = int(toInteger(points, "points", 2, 10000));
+    WarningList warnings;
+    const LensView v = view(fstop, focus, sensor, py::none(), warnings);
+    warnings.emit();
+    std::vector<RelativeIlluminationPoint> curve;
+    {
+      const py::gil_scoped_release release;
+      curve = withLensErrors(lens_, [&] {
+        return relativeIlluminationCurve(v.lens, v.filmDistanceMm, v.halfDiagonalMm(), count);
+      });
+    }
+    py::array_t<double> radius(py::ssize_t(curve.size())), relative(py::ssize_t(curve.size()));
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+      radius.mutable_data()[i] = curve[i].filmRadiusMm;
+      relative.mutable_data()[i] = curve[i].relative;
+    }
+    return py::make_tuple(radius, relative);
+  }
+
+  py::tuple distortion(py::handle fstop, py::handle focus, py::handle sensor, py::handle points) const {
+    const int count = int(toInteger(points, "points", 2, 10000));
+    WarningList warnings;
+    const LensView v = view(fstop, focus, sensor, py::none(), warnings);
+    warnings.emit();
+    const std::vector<DistortionPoint> curve = withLensErrors(lens_, [&] {
+      return distortionCurve(v.lens, v.focusMm, v.filmDistanceMm, v.halfDiagonalMm(), count);
+    });
+    py::array_t<double> angle(py::ssize_t(curve.size())), percent(py::ssize_t(curve.size()));
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+      angle.mutable_data()[i] = curve[i].fieldAngleDeg;
+      percent.mutable_data()[i] = curve[i].percent;
+    }
+    return py::make_tuple(angle, percent);
+  }
+
+ private:
+  UserLens lens_;
+};
+
+}  // namespace
+
+void bindLens(py::module_& m) {
+  using py::arg;
+  py::class_<PyLens>(
+      m, "Lens", R"doc(A lens: a library name (e.g. "dgauss-50mm") or a lens file (.lens, .json, .dat, .zmx).
+
+Lens space: millimetres, the optical axis along z, the front vertex at z = 0
+and the film behind the rear vertex at z > 0. Raises FileNotFoundError when
+no such file or library lens exists, ValueError when the file is invalid.)doc")
+      .def(py::init<py::handle>(), arg("lens"))
+      .def_property_readonly(
+          "name", [](const PyLens& l) { return l.user().prescription.name; }, "The lens's name (str).")
+      .def_property_readonly(
+          "file", [](const PyLens& l) { return l.user().prescription.file; },
+          "The file it was read from (str).")
+      .def("__repr__", [](const PyLens& l) { return "lensrt.Lens('" + l.user().label + "')"; })
+      .def("info", &PyLens::info, arg("fstop") = py::none(), arg("focus") = "inf", arg("sensor") = "36x24",
+           arg("coc") = py::none(), arg("coatings") = "none",
+           R"doc(First-order data, the dict `lensrt lens info --json` prints.
+
+fstop: f-number to stop down to (None: wide open).
+focus: object distance in metres from the entrance pupil, or "inf".
+sensor: "WxH" in mm or a (width, height) pair in mm.
+coc: circle of confusion in mm (None: the sensor diagonal / 1500).
+coatings: "none", "single" or "multi", for the axial transmittance.
+Distances are in mm unless the key ends in _m (metres); None at infinity.)doc")
+      .def_property_readonly("surfaces", &PyLens::surfaces,
+                             R"doc(The surfaces front to back, as dicts: radius_mm (0: flat), thickness_mm
+(to the next vertex), aperture_diameter_mm, z_mm (vertex), stop (bool), n_d, v_d
+and glass of the medium behind the surface ("air" for air), conic, aspheric
+(A4, A6, ... A16).)doc")
+      .def("trace", &PyLens::trace, arg("origins"), arg("directions"), arg("wavelength_nm") = kWavelengthDNm,
+           arg("fstop") = py::none(), arg("coatings") = py::none(),
+           R"doc(Traces rays from the film side through the lens toward the scene, exactly.
+
+origins, directions: N x 3 arrays in lens space (mm), directions with z < 0.
+wavelength_nm: the wavelength in nm (default the helium d line, 587.5618).
+fstop: stop down first (None: wide open). coatings: None (lossless glass),
+"none" (bare glass), "single" or "multi": the weights carry Fresnel losses.
+Returns TraceResult(points, directions, weights, passed): where the rays leave
+the front surface (N x 3, mm) and their unit directions (N x 3), the
+transmitted fraction (N), and which rays passed (N, bool; rows of blocked
+rays are 0). The GIL is released; the rays are traced in parallel.)doc")
+      .def("focus", &PyLens::focus, arg("distance_m"),
+           R"doc(The film distance in mm (rear vertex to film) that focuses an object
+distance_m metres in front of the entrance pupil (or "inf"/math.inf).)doc")
+      .def("spot", &PyLens::spot, arg("field_deg") = 0.0, arg("fstop") = py::none(), arg("focus") = "inf",
+           arg("rays") = 41, arg("wavelength_nm") = kWavelengthDNm, arg("coatings") = py::none(),
+           R"doc(Spot diagram: film (x, y) in mm, an M x 2 array, of a grid of `rays` rays across the
+passing beam of a point at field_deg degrees from the axis (toward +x), with the
+film focused at `focus` metres (or "inf").)doc")
+      .def("relative_illumination", &PyLens::relativeIllumination, arg("fstop") = py::none(),
+           arg("focus") = "inf", arg("sensor") = "36x24", arg("points") = 33,
+           R"doc(Relative illumination E(r)/E(0) of a uniform scene across the film, from exact rays
+(cos^4 falloff, vignetting, pupil aberration). Returns (radius_mm, relative),
+two arrays of `points` film radii from 0 to the sensor's half diagonal.)doc")
+      .def("distortion", &PyLens::distortion, arg("fstop") = py::none(), arg("focus") = "inf",
+           arg("sensor") = "36x24", arg("points") = 41,
+           R"doc(Distortion of the real chief ray against the paraxial image height, in percent
+(negative: barrel). Returns (field_deg, percent), two arrays up to the field
+that reaches the sensor's half diagonal.)doc");
+}
+
+}  // namespace lensrt::python

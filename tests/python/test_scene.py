@@ -1,0 +1,198 @@
+"""lensrt.Scene: the command line's bits, poses, AOVs, progress, Ctrl-C, errors."""
+
+import ast
+import os
+import pathlib
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import lensrt
+from conftest import ROOT, SCENES
+
+DOF = SCENES / "dof_row.gltf"
+
+
+@pytest.fixture(scope="module")
+def dof():
+    return lensrt.Scene(DOF)
+
+
+@pytest.mark.parametrize(
+    "flags, kwargs",
+    [
+        (["--camera", "pinhole"], dict(camera="pinhole")),
+        (["--camera", "thin", "--fstop", "2", "--focus", "2"], dict(camera="thin", fstop=2, focus=2.0)),
+        (["--camera", "thick", "--lens", "dgauss-50mm"], dict(camera="thick", lens="dgauss-50mm")),
+        (["--camera", "lens", "--lens", "dgauss-50mm", "--fstop", "2.8", "--aov", "depth,variance"],
+         dict(camera="lens", lens="dgauss-50mm", fstop=2.8, aov=("depth", "variance"))),
+    ],
+)
+def test_same_bits_as_the_command_line(dof, cli, tmp_path, flags, kwargs):
+    out = tmp_path / "cli.exr"
+    cli("render", DOF, "--res", "96x54", "--spp", "4", "--seed", "11", "-q", "-o", out, *flags)
+    result = dof.render(res=(96, 54), spp=4, seed=11, **kwargs)
+    report = lensrt.diff(out, result, fail=0, warn=0)
+    assert report["overall"]["maxError"] == 0.0 and report["verdict"] == "PASS"
+    # And written, the same file but for the call and the time.
+    result.write(tmp_path / "py.exr")
+    assert lensrt.diff(out, tmp_path / "py.exr", fail=0)["overall"]["maxError"] == 0.0
+
+
+def test_arrays_view_the_render_without_copies(dof):
+    result = dof.render(res=(64, 36), spp=1, aov="depth")
+    rgb, channels = result.rgb, result.channels
+    assert rgb.shape == (36, 64, 3) and rgb.dtype == np.float32
+    assert list(channels) == ["R", "G", "B", "A", "depth.Z"]
+    address = lambda a: a.__array_interface__["data"][0]
+    # One interleaved buffer: R, G, B, A, depth.Z of a pixel side by side.
+    assert np.shares_memory(rgb, channels["R"]) and address(rgb) == address(channels["R"])
+    assert address(channels["depth.Z"]) == address(rgb) + 4 * 4 and rgb.strides == (64 * 5 * 4, 5 * 4, 4)
+    assert (rgb[..., 1] == channels["G"]).all()
+    del result  # the arrays keep the pixels alive
+    assert np.isfinite(rgb).all() and rgb.mean() > 0
+
+
+def test_camera_to_world_sets_the_pose():
+    # flat_wall: an emitting wall in the plane z = -2 m; a camera at z = c
+    # looking down -Z sees it at depth 2 + c on its axis.
+    wall = lensrt.Scene(SCENES / "flat_wall.gltf")
+    for c in (1.0, -1.5):
+        pose = np.eye(4)
+        pose[2, 3] = c
+        depth = wall.render(res=(33, 33), spp=1, aov="depth", camera_to_world=pose).channels["depth.Z"]
+        assert depth[16, 16] == pytest.approx(2.0 + c, rel=1e-4)  # float32 depth
+    # Turned to look along +Z (180 degrees about Y), it sees nothing.
+    turned = np.diag([-1.0, 1.0, -1.0, 1.0])
+    result = wall.render(res=(16, 16), spp=1, camera_to_world=turned, env="none")
+    assert result.rgb.max() == 0.0
+    with pytest.raises(ValueError, match="camera_to_world: expected a rigid 4 x 4 pose"):
+        wall.render(camera_to_world=np.diag([2.0, 2.0, 2.0, 1.0]))
+    with pytest.raises(ValueError, match="camera_to_world: expected a 4 x 4 array"):
+        wall.render(camera_to_world=np.eye(3))
+
+
+def test_progress_is_called_between_passes_and_can_stop(dof):
+    calls = []
+    result = dof.render(res=(32, 18), spp=16, progress=lambda done, total: calls.append((done, total)))
+    assert calls[-1] == (16, 16) and [d for d, _ in calls] == sorted(d for d, _ in calls)
+    assert result.finished and result.spp == 16
+    stopped = dof.render(res=(32, 18), spp=64, progress=lambda done, total: done < 2)
+    assert not stopped.finished and 2 <= stopped.spp < 64
+    with pytest.raises(ZeroDivisionError):
+        dof.render(res=(32, 18), spp=8, progress=lambda done, total: 1 / 0)
+
+
+def test_the_gil_is_released_while_rendering(dof):
+    ticks = []
+    done = threading.Event()
+
+    def tick():
+        while not done.is_set():
+            ticks.append(1)
+            time.sleep(0.001)
+
+    thread = threading.Thread(target=tick)
+    thread.start()
+    start = time.monotonic()
+    dof.render(res=(320, 180), spp=16, threads=1)
+    seconds = time.monotonic() - start
+    done.set()
+    thread.join()
+    # Held, the other thread would not run at all while the render does.
+    assert len(ticks) > 0.2 * seconds / 0.001
+
+
+def test_ctrl_c_stops_the_render_at_the_end_of_a_pass(tmp_path):
+    script = tmp_path / "long.py"
+    script.write_text(
+        "import lensrt, sys\n"
+        f"scene = lensrt.Scene({str(DOF)!r})\n"
+        "print('rendering', flush=True)\n"
+        "try:\n"
+        "    scene.render(res=(320, 180), spp=1 << 20, threads=1)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True)\n"
+        "    sys.exit(3)\n")
+    env = dict(os.environ)
+    proc = subprocess.Popen([sys.executable, str(script)], stdout=subprocess.PIPE, text=True, env=env)
+    assert proc.stdout.readline().strip() == "rendering"
+    time.sleep(1.0)
+    sent = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=60)
+    # A pass lasts about a second, the one in flight finishes.
+    assert proc.returncode == 3 and out.strip() == "interrupted"
+    assert time.monotonic() - sent < 10
+
+
+def test_render_help_lists_every_keyword_of_the_stub():
+    stub = ast.parse((pathlib.Path(lensrt.__file__).parent / "__init__.pyi").read_text())
+    scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
+    render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
+    keywords = [a.arg for a in render.args.kwonlyargs]
+    assert len(keywords) == 29
+    doc = lensrt.Scene.render.__doc__
+    for k in keywords:
+        assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line
+        assert f"{k}:" in doc or f"{k} (" in doc or f" {k}," in doc, k  # and described
+    # Every stub keyword is one render() takes: an unknown one is refused.
+    with pytest.raises(ValueError, match="unknown option 'spp_count'"):
+        lensrt.Scene(DOF).render(spp_count=4)
+
+
+@pytest.mark.parametrize(
+    "kwargs, error",
+    [
+        (dict(spp="many"), "spp: expected an integer, got str 'many'"),
+        (dict(spp=0), "spp: expected an integer from 1"),
+        (dict(camera="fisheye"), "--camera: expected one of pinhole, thin, thick, lens, got 'fisheye'"),
+        (dict(blades=2), "--blades: 2 blades"),
+        (dict(camera="lens", lens="dgauss-50mm", coatings="gold"), "--coatings: expected one of"),
+        (dict(res=(0, 10)), "res: expected an integer from 1"),
+        (dict(aov="depth,colour"), "--aov: unknown AOV 'colour'"),
+        (dict(fstop=float("nan")), "fstop: expected a finite number"),
+        (dict(env="constant:x"), "--env"),
+        (dict(camera="lens"), "--lens"),
+        (dict(progress=3), "progress: expected a callable"),
+        (dict(crop=(10, 5, 0, 4)), "crop: expected x0 < x1"),
+    ],
+)
+def test_bad_options_raise_value_error(dof, kwargs, error):
+    with pytest.raises(ValueError) as raised:
+        dof.render(**{"res": (32, 18), "spp": 1, **kwargs})
+    assert error in str(raised.value)
+
+
+def test_missing_and_broken_files(tmp_path):
+    with pytest.raises(FileNotFoundError, match="nowhere.glb"):
+        lensrt.Scene(tmp_path / "nowhere.glb")
+    broken = tmp_path / "broken.gltf"
+    broken.write_text('{"asset": {"version": "2.0"}, "scenes": [{"nodes": [7]}]}')
+    with pytest.raises(ValueError, match="broken.gltf"):
+        lensrt.Scene(broken)
+    with pytest.raises(FileNotFoundError, match="no-such-lens"):
+        lensrt.Scene(DOF).render(camera="lens", lens="no-such-lens", res=(8, 8), spp=1)
+    with pytest.raises(ValueError, match="scene_index: expected an integer"):
+        lensrt.Scene(DOF, scene_index="first")
+
+
+def test_diff_is_diff_json(cli, cli_json, tmp_path, dof):
+    a, b = tmp_path / "a.exr", tmp_path / "b.exr"
+    dof.render(res=(48, 27), spp=2, seed=1, aov="variance").write(a)
+    dof.render(res=(48, 27), spp=2, seed=2, aov="variance").write(b)
+    expected = cli("diff", a, b, "--json", "--noise-aware", check=False)
+    import json
+    assert lensrt.diff(str(a), str(b), noise_aware=True) == json.loads(expected.stdout)
+    assert lensrt.diff(str(a), str(b))["exitStatus"] == cli("diff", a, b, check=False).returncode
+    with pytest.raises(FileNotFoundError):
+        lensrt.diff(tmp_path / "none.exr", b)
+    with pytest.raises(ValueError, match="not comparable"):
+        lensrt.diff(a, dof.render(res=(8, 8), spp=1))
+    with pytest.raises(ValueError, match="fail_percent: expected a number from 0 to 100"):
+        lensrt.diff(a, b, fail_percent=200)
