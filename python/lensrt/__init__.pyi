@@ -118,6 +118,8 @@ class Scene:
         dispersion: str | bool = "on",
         coatings: str | None = None,
         film: str | None = None,
+        noise: str | bool = "off",
+        sensor_params: _Path | None = None,
         progress: Callable[[int, int], bool | None] | None = None,
     ) -> RenderResult: ...
 

@@ -8,6 +8,7 @@
 //   --dispersion on|off
 //   --coatings none|single|multi
 //   --film radiance|irradiance
+//   --noise on|off   --sensor-params NAME|FILE.json
 //
 // Bad values are usage errors (UsageError naming the flag: exit 2 in the
 // command line); app/camera_flags.h registers the flags.
@@ -46,6 +47,8 @@ struct CameraOptions {
   // "radiance", "irradiance", or empty for the model's default: radiance for
   // the pinhole, irradiance for thin, thick and lens (which refuse radiance).
   std::string film;
+  std::string noise = "off";      // --noise on: the sensor's readout (api/sensor_readout.h)
+  std::string sensorParams;       // --sensor-params NAME|FILE.json; empty: the default sensor
   std::filesystem::path lensDir;  // the library; addCameraOptions sets the installed one
 };
 

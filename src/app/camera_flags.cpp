@@ -74,6 +74,17 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "default, pinhole only) or irradiance (the physical film, scaled by --exposure; the default "
                  "of thin, thick and lens)")
       ->check(CLI::IsMember({"radiance", "irradiance"}));
+  cmd.add_option("--noise", o.noise,
+                 "on: the sensor reads the exposure out as a camera does: photo-electrons (from the lux "
+                 "seconds on a pixel with --exposure physical, else 1.0 = full well), shot noise, dark "
+                 "current, read noise, PRNU/DSNU, full-well clipping, ISO gain and ADC; R,G,B hold the "
+                 "reading, noiseless.R/G/B the render (default off)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  cmd.add_option("--sensor-params", o.sensorParams,
+                 "the sensor for --noise on: a preset (default, full-frame, smartphone, machine-vision) or "
+                 "a JSON file of full_well_e, gain_dn_per_e, base_iso, read_noise_e, dark_current_e_per_s, "
+                 "prnu_percent, dsnu_percent, adc_bits, black_level_dn, quantum_efficiency (see README)");
 }
 
 }  // namespace lensrt

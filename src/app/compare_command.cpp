@@ -120,6 +120,11 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   CompareArgs args = givenArgs;
   if (!leader) args.quiet = true;
   // 1. Everything that can fail before rendering.
+  // The models are compared on the noiseless film; lensrt render reads one out.
+  if (args.camera.noise != "off" || !args.camera.sensorParams.empty())
+    throw UsageError(args.camera.noise != "off" ? "--noise" : "--sensor-params",
+                     "lensrt compare compares the models' noiseless images; lensrt render --noise on reads "
+                     "one out through a sensor");
   SceneOptions sceneOptions;
   sceneOptions.scene = args.scene;
   sceneOptions.sceneIndex = args.sceneIndex;

@@ -18,6 +18,7 @@
 #include "api/render_job.h"
 #include "api/render_options.h"
 #include "api/render_request.h"
+#include "api/sensor_readout.h"
 #include "app/camera_flags.h"
 #include "app/command.h"
 #include "app/option_checks.h"
@@ -155,7 +156,9 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   const PixelRegion region = partOfFrame(args, job.width(), job.height());
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
-  const ImageMetadata identity = job.identity(*camera, settings);
+  const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film());
+  ImageMetadata identity = job.identity(*camera, settings);
+  addSensorIdentity(identity, readout);
   // The running sums live on rank 0 alone: the other ranks get strips.
   std::optional<FilmState> leaderState;
   if (leader) {
@@ -190,8 +193,10 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   const auto started = std::chrono::steady_clock::now();
   auto lastCheckpoint = started;
   GatherCost gather;  // under MPI, once the render is done
-  const auto metadataOf = [&](const RenderJobResult& r) {
+  // The metadata of an image to write; with --noise on, the sensor reads it out first.
+  const auto metadataOf = [&](RenderJobResult& r) {
     ImageMetadata m = job.metadata(*camera, settings, r, context.commandLine);
+    if (readout) readOut(*readout, r.output.image, m, settings.seed);
     m["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
     if (shared) m["lensrt:mpi_ranks"] = std::to_string(cluster.size());
     if (gather.bytes > 0) {
@@ -209,7 +214,8 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
       RenderJobResult partial;
       partial.output = renderOutput(*camera, s);
       partial.seconds = std::chrono::duration<double>(now - started).count();
-      writeCheckpoint(args.output, s, partial.output.image, metadataOf(partial));
+      const ImageMetadata metadata = metadataOf(partial);
+      writeCheckpoint(args.output, s, partial.output.image, metadata);
       lastCheckpoint = std::chrono::steady_clock::now();
     };
   bool finished = false;
@@ -230,10 +236,13 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   }
 
   // 3. Write: with the running sums when it can be continued.
-  if (args.checkpointSeconds > 0 || !finished)
-    writeCheckpoint(args.output, state, result.output.image, metadataOf(result));
-  else
-    writeOutputImage(args.output, result.output.image, metadataOf(result));
+  {
+    const ImageMetadata metadata = metadataOf(result);
+    if (args.checkpointSeconds > 0 || !finished)
+      writeCheckpoint(args.output, state, result.output.image, metadata);
+    else
+      writeOutputImage(args.output, result.output.image, metadata);
+  }
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
                args.scene, result.output.droppedSamples);

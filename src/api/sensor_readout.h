@@ -1,0 +1,36 @@
+// --noise on and --sensor-params: the sensor's readout (sensor/readout.h)
+// of a render, with the exposure the camera options give it.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "api/camera_options.h"
+#include "camera/camera.h"
+#include "image/image.h"
+#include "sensor/readout.h"
+#include "sensor/sensor_params.h"
+
+namespace lensrt {
+
+struct SensorReadout {
+  SensorParams params;
+  SensorExposure exposure;
+  // lensrt:sensor_noise: "default: full well 20000 e, 0.2 DN/e x 1, read 3 e, ..."
+  std::string describe() const;
+};
+
+// None with --noise off. Physical exposure gives electrons from the lux
+// seconds on a pixel of the film's pitch; normalized exposure fills the well
+// at an image value of 1.0. Throws UsageError / InputError for bad settings.
+std::optional<SensorReadout> sensorReadout(const CameraOptions& options, const FilmGeometry& film);
+
+// Appends " sensor_noise=NAME" to lensrt:settings (an identity key: a noisy
+// and a noiseless part never merge); nothing without a readout.
+void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadout>& readout);
+
+// The readout applied to a render's image, with its metadata
+// (lensrt:sensor_noise, lensrt:sensor_electrons_per_value, lensrt:sensor_dn_per_electron).
+void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed);
+
+}  // namespace lensrt

@@ -1,0 +1,79 @@
+// lensrt render --noise on: the image a sensor reads out, with the render
+// kept as noiseless.R/G/B; the reading is the same whole or in tiles (merged),
+// and a tile rendered without noise does not merge with one rendered with it.
+// The physics (photon transfer curve) is tests/python/test_sensor_noise.py's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cli/cli_util.h"
+#include "image/image_io.h"
+
+namespace lensrt {
+namespace {
+
+using cli::runLensrt;
+using cli::RunResult;
+using cli::TempDir;
+
+const std::string kScene = std::string(LENSRT_SOURCE_DIR) + "/scenes/flat_wall.gltf";
+
+std::vector<std::string> renderArgs(const std::filesystem::path& out, std::vector<std::string> extra) {
+  std::vector<std::string> args = {"render",  kScene, "--camera",  "thin",  "--focal-length",  "50",
+                                   "--fstop", "4",    "--res",     "40x30", "--spp",           "2",
+                                   "--env",   "none", "--noise",   "on",    "--sensor-params", "smartphone",
+                                   "-q",      "-o",   out.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+TEST(SensorNoiseCli, ReadsOutTheRenderAndKeepsItAsNoiseless) {
+  const TempDir dir;
+  const RunResult r = runLensrt(renderArgs(dir / "a.exr", {}));
+  ASSERT_EQ(r.status, 0) << r.err;
+  ImageMetadata meta;
+  const Image img = readImage(dir / "a.exr", &meta);
+  ASSERT_GE(img.channelIndex("noiseless.G"), 0);
+  EXPECT_NE(meta["lensrt:sensor_noise"].find("smartphone: full well 6000 e"), std::string::npos);
+  EXPECT_NE(meta["lensrt:settings"].find("sensor_noise=smartphone"), std::string::npos);
+  // Normalized exposure: 1.0 fills the 6000 e well, so the reading differs
+  // from the render by about sqrt(6000 v) / 6000 (shot noise), never by more
+  // than the clipping allows.
+  const int g = img.channelIndex("G"), n = img.channelIndex("noiseless.G");
+  double sum = 0, sumSq = 0, meanValue = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const double d = img.at(x, y, g) - img.at(x, y, n);
+      sum += d, sumSq += d * d, meanValue += img.at(x, y, n);
+    }
+  const double count = img.width * img.height, mean = sum / count, var = sumSq / count - mean * mean;
+  meanValue /= count;
+  EXPECT_NEAR(mean, 0.0, 4 * std::sqrt(var / count));
+  // Shot noise in value units: v / 6000; more from read noise, PRNU and quantisation.
+  EXPECT_GT(var, 0.9 * meanValue / 6000.0);
+  EXPECT_LT(var, 2.0 * meanValue / 6000.0);
+}
+
+TEST(SensorNoiseCli, TilesReadOutTheWholeFramesNumbers) {
+  const TempDir dir;
+  ASSERT_EQ(runLensrt(renderArgs(dir / "whole.exr", {})).status, 0);
+  for (const char* tile : {"0/2", "1/2"})
+    ASSERT_EQ(runLensrt(renderArgs(dir / (std::string("t") + tile[0] + ".exr"), {"--tile", tile})).status, 0);
+  const RunResult merged = runLensrt(
+      {"merge", (dir / "t0.exr").string(), (dir / "t1.exr").string(), "-o", (dir / "m.exr").string()});
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  const RunResult same =
+      runLensrt({"diff", (dir / "whole.exr").string(), (dir / "m.exr").string(), "--fail", "0"});
+  EXPECT_EQ(same.status, 0) << same.out;
+  // A noiseless tile is another render.
+  std::vector<std::string> plain = renderArgs(dir / "p1.exr", {"--tile", "1/2"});
+  plain.erase(plain.begin() + 14, plain.begin() + 18);  // --noise on --sensor-params smartphone
+  ASSERT_EQ(runLensrt(plain).status, 0);
+  const RunResult mixed = runLensrt(
+      {"merge", (dir / "t0.exr").string(), (dir / "p1.exr").string(), "-o", (dir / "x.exr").string()});
+  EXPECT_NE(mixed.status, 0);
+  EXPECT_NE(mixed.err.find("settings"), std::string::npos) << mixed.err;
+}
+
+}  // namespace
+}  // namespace lensrt
