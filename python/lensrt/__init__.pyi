@@ -120,6 +120,8 @@ class Scene:
         film: str | None = None,
         noise: str | bool = "off",
         sensor_params: _Path | None = None,
+        raw: _Path | None = None,
+        cfa: str = "RGGB",
         progress: Callable[[int, int], bool | None] | None = None,
     ) -> RenderResult: ...
 

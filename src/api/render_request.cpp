@@ -32,6 +32,7 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   checkImageFitsInMemory(job.width(), job.height(), filmChannels(request.settings.aovs).size());
   const std::unique_ptr<Camera> camera = job.makeCamera(request.camera, warnings);
   const std::optional<SensorReadout> readout = sensorReadout(request.camera, camera->film());
+  checkRawOutput(request.raw);
   RenderSettings settings = request.settings;
   if (settings.samplesPerPixel < 1) throw UsageError("--spp", "expected at least 1 sample per pixel");
   const PixelRegion frameRegion = PixelRegion::wholeFrame(job.width(), job.height());
@@ -56,6 +57,8 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   RenderResult result;
   result.metadata = job.metadata(*camera, settings, done, request.commandLine);
   if (readout) readOut(*readout, done.output.image, result.metadata, settings.seed);
+  if (!request.raw.file.empty() && finished)
+    writeRawOutput(request.raw, done.output.image, readout, *camera, request.camera, settings.seed);
   result.metadata["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
   result.image = std::move(done.output.image);
   result.seconds = done.seconds;

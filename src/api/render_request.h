@@ -9,6 +9,7 @@
 #include <string>
 
 #include "api/camera_options.h"
+#include "api/raw_output.h"
 #include "api/render_job.h"
 #include "api/scene.h"
 #include "core/warnings.h"
@@ -21,6 +22,7 @@ struct RenderRequest {
   FrameOptions frame;       // camera node and pose, resolution, environment, max depth
   CameraOptions camera;     // the model and its optics
   RenderSettings settings;  // spp, seed, threads, AOVs, region
+  RawOutputOptions raw;     // --raw OUT.dng and --cfa: written when the render finishes
   // lensrt:command_line in the metadata: how the render was asked for.
   std::string commandLine;
 };

@@ -15,6 +15,7 @@
 
 #include "api/camera_options.h"
 #include "api/output_file.h"
+#include "api/raw_output.h"
 #include "api/render_job.h"
 #include "api/render_options.h"
 #include "api/render_request.h"
@@ -48,6 +49,7 @@ struct RenderArgs {
   int tileSize = 16;
   std::string crop;
   std::string tile;
+  RawOutputOptions raw;
   double checkpointSeconds = 0;  // 0: no checkpoints
   std::string resume;
   bool quiet = false;
@@ -124,6 +126,7 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
   // that a long render never ends in an error.
   std::error_code ec;
   if (leader) noteCreatedFolder(checkOutputFile(args.output), args.quiet);
+  if (leader) checkRawOutput(args.raw);
   const bool exr = std::filesystem::path(args.output).extension() == ".exr";
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw CLI::ValidationError("--checkpoint/--resume",
@@ -242,6 +245,8 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
       writeCheckpoint(args.output, state, result.output.image, metadata);
     else
       writeOutputImage(args.output, result.output.image, metadata);
+    if (!args.raw.file.empty() && finished)
+      writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera, settings.seed);
   }
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
@@ -323,6 +328,14 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
          "most a row (for job arrays; join with lensrt merge), e.g. --tile 0/8")
       ->check([](const std::string& s) { return checkTile(s); })
       ->excludes(crop);
+  cmd->add_option(
+      "--raw", args->raw.file,
+      "also write the raw file a camera would: the colour filter mosaic (--cfa) as a 16-bit linear "
+      "DNG that raw developers read (with --noise on the sensor's DN; else an image value of 1.0 "
+      "at the white level 65535), e.g. --raw out/a.dng");
+  cmd->add_option("--cfa", args->raw.cfa, "the raw file's colour filter pattern: RGGB, BGGR, GRBG or GBRG")
+      ->check(CLI::IsMember({"RGGB", "BGGR", "GRBG", "GBRG"}))
+      ->capture_default_str();
   cmd->add_option(
          "--checkpoint", args->checkpointSeconds,
          "every SECONDS, write the image so far to -o (atomically) with its running sums in OUT.sums, "

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <string>
 #include <system_error>
@@ -176,6 +177,18 @@ void writeImage(const fs::path& file, const Image& image, const ImageMetadata& m
   const std::string bytes = encode(file, kind, image, metadata, options);
   TemporaryFile tmp(createTemporaryBeside(file));
   writeBytes(file, tmp.path(), bytes);
+  fs::rename(tmp.path(), file, ec);
+  if (ec) throw InputError(file.string(), "cannot replace the file: " + ec.message());
+  tmp.release();
+}
+
+void writeFileThrough(const fs::path& file, const std::function<void(const fs::path&)>& write) {
+  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(file.string(), "directory does not exist: " + dir.string());
+  if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
+  TemporaryFile tmp(createTemporaryBeside(file));
+  write(tmp.path());
   fs::rename(tmp.path(), file, ec);
   if (ec) throw InputError(file.string(), "cannot replace the file: " + ec.message());
   tmp.release();

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -56,5 +57,12 @@ Image decodeImage(std::string_view bytes, const std::string& name, ImageMetadata
 // True when writeImage accepts the file's extension: .exr, .png, .jpg, .jpeg
 // (any case). Lets commands reject a bad output name before rendering.
 bool isWritableImageExtension(const std::filesystem::path& file);
+
+// Writes `file` as writeImage does, for a writer of its own format: `write`
+// fills a temporary file beside it (same file system), which is then renamed
+// into place, so a failed write never replaces a good file. Throws
+// InputError naming `file` (and lets `write`'s exceptions through).
+void writeFileThrough(const std::filesystem::path& file,
+                      const std::function<void(const std::filesystem::path&)>& write);
 
 }  // namespace lensrt

@@ -159,7 +159,8 @@ class PyScene {
         "threads",       "crop",          "blades",      "blade_rotation",
         "aperture_mask", "focal_length",  "exposure",    "shutter",
         "iso",           "dispersion",    "coatings",    "film",
-        "noise",         "sensor_params", "progress"};
+        "noise",         "sensor_params", "raw",         "cfa",
+        "progress"};
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
       if (std::find(known.begin(), known.end(), name) == known.end())
@@ -341,7 +342,8 @@ ValueError for a broken one. The GIL is released while it loads.)doc")
        env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
        exposure="normalized", shutter=None, iso=None, dispersion="on", coatings=None,
-       film=None, noise="off", sensor_params=None, progress=None) -> RenderResult
+       film=None, noise="off", sensor_params=None, raw=None, cfa="RGGB",
+       progress=None) -> RenderResult
 
 Renders the scene as `lensrt render` does, with the same bits for the same
 settings and seed. Keywords only, each the flag of the same name:
@@ -373,6 +375,8 @@ settings and seed. Keywords only, each the flag of the same name:
     noise, PRNU/DSNU, full well, ISO gain, ADC); channels noiseless.R/G/B keep
     the render. sensor_params: a preset ("default", "full-frame", "smartphone",
     "machine-vision") or a sensor .json file (see the README).
+  raw: also write the raw file, a .dng of the colour filter mosaic (cfa: "RGGB",
+    "BGGR", "GRBG" or "GBRG"), as `lensrt render --raw` does.
   progress: callable(done_spp, total_spp) called between passes (which double
     from 1 spp up to about a second each); returning False stops the render
     there (RenderResult.finished is then False).

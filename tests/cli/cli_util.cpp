@@ -22,21 +22,25 @@ std::atomic<int> counter{0};
 }
 
 RunResult runLensrt(const std::vector<std::string>& args) {
+  return runProgram(LENSRT_BINARY, args);
+}
+
+RunResult runProgram(const std::string& program, const std::vector<std::string>& args) {
   const TempDir io;
   const std::string outPath = (io / "stdout").string(), errPath = (io / "stderr").string();
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> argvStrings{LENSRT_BINARY};
+  std::vector<std::string> argvStrings{program};
   argvStrings.insert(argvStrings.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (std::string& s : argvStrings) argv.push_back(s.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, LENSRT_BINARY, &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) throw std::runtime_error(std::string("cannot run lensrt: ") + std::strerror(rc));
+  if (rc != 0) throw std::runtime_error("cannot run " + program + ": " + std::strerror(rc));
   int wstatus = 0;
   waitpid(pid, &wstatus, 0);
   RunResult r;

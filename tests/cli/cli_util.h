@@ -14,6 +14,8 @@ struct RunResult {
 };
 
 RunResult runLensrt(const std::vector<std::string>& args);
+// Any program, found on the PATH (dcraw, raw-identify).
+RunResult runProgram(const std::string& program, const std::vector<std::string>& args);
 
 // A fresh empty directory for the current test, removed by the destructor.
 class TempDir {

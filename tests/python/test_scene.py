@@ -136,7 +136,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
     render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
     keywords = [a.arg for a in render.args.kwonlyargs]
-    assert len(keywords) == 31
+    assert len(keywords) == 33
     doc = lensrt.Scene.render.__doc__
     for k in keywords:
         assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line
@@ -196,3 +196,15 @@ def test_diff_is_diff_json(cli, cli_json, tmp_path, dof):
         lensrt.diff(a, dof.render(res=(8, 8), spp=1))
     with pytest.raises(ValueError, match="fail_percent: expected a number from 0 to 100"):
         lensrt.diff(a, b, fail_percent=200)
+
+
+def test_raw_writes_the_mosaic_as_a_dng(dof, tmp_path):
+    out = tmp_path / "raw" / "a.dng"
+    result = dof.render(res=(40, 30), spp=1, raw=out, cfa="BGGR")
+    data = out.read_bytes()
+    assert data[:4] == b"II*\x00" and len(data) > 40 * 30 * 2
+    # BGGR: the top-left site is blue, the 16-bit value of the image's B there.
+    blue = round(min(max(float(result.channels["B"][0, 0]), 0.0), 1.0) * 65535)
+    assert blue.to_bytes(2, "little") in data
+    with pytest.raises(ValueError, match="--cfa: expected RGGB, BGGR, GRBG or GBRG, got 'RGBG'"):
+        dof.render(res=(8, 8), spp=1, raw=out, cfa="RGBG")

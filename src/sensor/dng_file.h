@@ -1,0 +1,30 @@
+// Raw files a photographer can develop: a CFA mosaic as a 16-bit linear DNG
+// (Adobe DNG 1.4) through libtiff, with the tags raw developers need.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+
+#include "sensor/mosaic.h"
+
+namespace lensrt {
+
+struct DngDescription {
+  CfaPattern pattern;
+  std::string make = "lensrt", model;    // the camera; UniqueCameraModel is "make model"
+  std::array<double, 9> colorMatrix1{};  // XYZ -> camera RGB under calibrationIlluminant1, row-major
+  int calibrationIlluminant1 = 21;       // EXIF LightSource: 21 is D65
+  std::array<double, 3> asShotNeutral{1.0, 1.0, 1.0};  // camera RGB of the white to balance to
+  double exposureSeconds = 0.0, iso = 0.0, fNumber = 0.0, focalLengthMm = 0.0;  // 0: not written
+};
+
+// The linear sRGB (Rec.709 primaries) camera lensrt's RGB film is: XYZ to linear
+// sRGB, D65 white (IEC 61966-2-1).
+inline constexpr std::array<double, 9> kXyzToLinearSrgb{
+    3.2404542, -1.5371385, -0.4985314, -0.9692660, 1.8760108, 0.0415560, 0.0556434, -0.2040259, 1.0572252};
+
+// Writes `mosaic` as a DNG; throws InputError(file, ...) when it cannot.
+void writeDng(const std::filesystem::path& file, const Mosaic& mosaic, const DngDescription& description);
+
+}  // namespace lensrt
