@@ -196,6 +196,8 @@ class PyScene {
       c.noise = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "noise");
     if (const py::object v = get("sensor_params"); !v.is_none())
       c.sensorParams = toPathText(v, "sensor_params");
+    if (const py::object v = get("raw"); !v.is_none()) request.raw.file = toPathText(v, "raw");
+    if (const py::object v = get("cfa"); !v.is_none()) request.raw.cfa = toText(v, "cfa");
 
     FrameOptions& f = request.frame;
     if (const py::object v = get("camera_node"); !v.is_none())
