@@ -328,10 +328,35 @@ std::string matrixText(const Transform::Matrix& m) {
 
 }  // namespace
 
+ImageMetadata standardCameraAttributes(const Camera& camera) {
+  const CameraInfo i = camera.info();
+  ImageMetadata m;
+  if (i.fNumber > 0) m["aperture"] = fmt::format("{:.6g}", i.fNumber);
+  if (i.focusMetres > 0 && std::isfinite(i.focusMetres)) m["focus"] = fmt::format("{:.6g}", i.focusMetres);
+  double shutter = 0.0, iso = 0.0;
+  if (std::sscanf(i.exposure.c_str(), "physical %lgs ISO%lg", &shutter, &iso) == 2) {
+    m["expTime"] = fmt::format("{:.6g}", shutter);
+    m["isoSpeed"] = fmt::format("{:.6g}", iso);
+  }
+  // OpenEXR's camera space is left-handed, looking down +Z with +Y up; glTF's
+  // looks down -Z: negate z after the world-to-camera transform. Imath
+  // multiplies row vectors, so the matrix is stored transposed.
+  const Transform::Matrix w = camera.worldFromCamera().inverse().matrix();
+  std::string text;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      text += fmt::format("{}{:.9g}", text.empty() ? "" : " ", (r == 2 ? -1.0 : 1.0) * w[r][c]);
+  m["worldToCamera"] = text;
+  // The film's RGB: linear Rec.709 primaries, D65 white (as sRGB).
+  m["chromaticities"] = "0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0.329";
+  return m;
+}
+
 ImageMetadata cameraMetadata(const Camera& camera) {
   const CameraInfo i = camera.info();
   const FilmGeometry& f = camera.film();
-  return {
+  ImageMetadata standard = standardCameraAttributes(camera);
+  ImageMetadata m = {
       {"lensrt:camera_model", i.model},
       {"lensrt:lens", i.lens.empty() ? "none" : i.lens},
       {"lensrt:f_number", i.fNumber > 0 ? fmt::format("{:.3g}", i.fNumber) : "none"},
@@ -346,6 +371,8 @@ ImageMetadata cameraMetadata(const Camera& camera) {
       {"lensrt:dispersion", i.dispersion ? "on" : "off"},
       {"lensrt:film", i.film},
   };
+  m.merge(standard);
+  return m;
 }
 
 }  // namespace lensrt

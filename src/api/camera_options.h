@@ -87,6 +87,10 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& options, const CameraDes
 // lensrt:camera_model, lensrt:lens, lensrt:f_number, lensrt:focus_m,
 // lensrt:focal_length_mm, lensrt:sensor_mm, lensrt:exposure, lensrt:dispersion,
 // lensrt:coatings, lensrt:film.
+// and OpenEXR's standard attributes, which the image layer writes typed:
+// aperture (f-number), focus (m), expTime (s) and isoSpeed (physical
+// exposure only), worldToCamera, chromaticities (Rec.709, D65).
 ImageMetadata cameraMetadata(const Camera& camera);
+ImageMetadata standardCameraAttributes(const Camera& camera);
 
 }  // namespace lensrt

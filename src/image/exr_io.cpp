@@ -3,6 +3,7 @@
 #include <Iex.h>
 #include <Imath/half.h>
 #include <ImfChannelList.h>
+#include <ImfChromaticitiesAttribute.h>
 #include <ImfCompressionAttribute.h>
 #include <ImfDoubleAttribute.h>
 #include <ImfFloatAttribute.h>
@@ -11,6 +12,7 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfIntAttribute.h>
+#include <ImfMatrixAttribute.h>
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
 #include <ImfStdIO.h>
@@ -19,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -27,6 +30,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <vector>
 
 #include "core/error.h"
@@ -140,6 +144,25 @@ void collectMetadata(const Imf::Header& header, ImageMetadata& metadata) {
           numberText(static_cast<const Imf::FloatAttribute&>(a).value());
     } else if (type == "double") {
       metadata[name] = numberText(static_cast<const Imf::DoubleAttribute&>(a).value());
+    } else if (type == "m44f") {
+      const Imath::M44f& m = static_cast<const Imf::M44fAttribute&>(a).value();
+      std::string text;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+          if (!text.empty()) text += ' ';
+          text += numberText(m[r][c]);
+        }
+      metadata[name] = text;
+    } else if (type == "chromaticities") {
+      const Imf::Chromaticities& ch = static_cast<const Imf::ChromaticitiesAttribute&>(a).value();
+      std::string text;
+      for (const Imath::V2f& v : {ch.red, ch.green, ch.blue, ch.white}) {
+        if (!text.empty()) text += ' ';
+        text += numberText(v.x);
+        text += ' ';
+        text += numberText(v.y);
+      }
+      metadata[name] = text;
     }
   }
 }
@@ -148,7 +171,49 @@ void collectMetadata(const Imf::Header& header, ImageMetadata& metadata) {
 // the names readImage gives them); writing it back must not turn those into
 // strings. They, and the multi-part file's structural ones, are left to the
 // header; every other key is written as a string.
+// OpenEXR's standard attributes that lensrt writes (ImfStandardAttributes.h),
+// kept in metadata as text: numbers, 16 for worldToCamera (Imath's row-vector
+// order) and 8 for chromaticities (red, green, blue, white x y). Written with
+// their standard types; text that does not parse is left out.
+constexpr std::array<const char*, 6> kStandardFloatKeys{"aperture", "focus",         "expTime",
+                                                        "isoSpeed", "worldToCamera", "chromaticities"};
+
+std::vector<float> numbersOf(const std::string& text) {
+  std::vector<float> out;
+  std::istringstream in(text);
+  float v = 0.0f;
+  while (in >> v) out.push_back(v);
+  if (!in.eof()) out.clear();
+  return out;
+}
+
+void insertStandardAttribute(Imf::Header& header, const std::string& key, const std::string& value) {
+  const std::vector<float> v = numbersOf(value);
+  for (const float x : v)
+    if (!std::isfinite(x)) return;
+  if (key == "worldToCamera") {
+    if (v.size() != 16) return;
+    Imath::M44f m;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) m[r][c] = v[std::size_t(r * 4 + c)];
+    Imf::addWorldToCamera(header, m);
+  } else if (key == "chromaticities") {
+    if (v.size() != 8) return;
+    Imf::addChromaticities(header,
+                           Imf::Chromaticities({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}));
+  } else if (v.size() == 1) {
+    header.insert(key, Imf::FloatAttribute(v[0]));
+  }
+}
+
+bool isStandardKey(const std::string& key) {
+  for (const char* k : kStandardFloatKeys)
+    if (key == k) return true;
+  return false;
+}
+
 bool isFreeKey(const Imf::Header& header, const std::string& key) {
+  if (isStandardKey(key)) return false;
   static constexpr std::array<const char*, 8> kReserved{
       "DateTime", "compression", "PixelAspectRatio", "name", "type", "version", "chunkCount", "tiles"};
   for (const char* reserved : kReserved)
@@ -383,7 +448,10 @@ std::string encodeExr(const std::string& name, const Image& image, const ImageMe
     const auto date = metadata.find("DateTime");
     header.insert("capDate", Imf::StringAttribute(date != metadata.end() ? date->second : captureDate()));
     for (const auto& [key, value] : metadata)
-      if (isFreeKey(header, key)) header.insert(key, Imf::StringAttribute(value));
+      if (isStandardKey(key))
+        insertStandardAttribute(header, key, value);
+      else if (isFreeKey(header, key))
+        header.insert(key, Imf::StringAttribute(value));
 
     // OpenEXR writes a frame buffer of the file's pixel type: halves are
     // converted here (Imath's round to nearest even).
