@@ -20,11 +20,10 @@ void checkRawOutput(const RawOutputOptions& o) {
 
 void writeRawOutput(const RawOutputOptions& o, const Image& image,
                     const std::optional<SensorReadout>& readout, const Camera& camera,
-                    const CameraOptions& options, std::uint64_t seed) {
+                    const CameraOptions& options) {
   const CfaPattern pattern = *parseCfaPattern(o.cfa);
-  const Mosaic mosaic =
-      readout ? makeMosaic(image, pattern, &readout->params, &readout->exposure, seed, "noiseless.")
-              : makeMosaic(image, pattern, nullptr, nullptr, seed, "");
+  const Mosaic mosaic = readout ? makeMosaic(image, pattern, &readout->params, &readout->exposure)
+                                : makeMosaic(image, pattern, nullptr, nullptr);
   const CameraInfo info = camera.info();
   DngDescription d;
   d.pattern = pattern;

@@ -23,12 +23,12 @@ struct RawOutputOptions {
 // folder is created and must take a new file (InputError), before any work.
 void checkRawOutput(const RawOutputOptions& options);
 
-// Writes the raw file of `image` (its R, G, B; after a sensor readout, its
-// noiseless.R/G/B read out again for each site's colour, the same numbers).
+// Writes the raw file of `image` (its R, G, B: after a sensor readout, the
+// DN of each site's colour that its reading came from).
 // The camera is a linear Rec.709 (sRGB primaries) one: ColorMatrix1 is XYZ
 // to linear sRGB under D65, AsShotNeutral 1, 1, 1.
 void writeRawOutput(const RawOutputOptions& options, const Image& image,
                     const std::optional<SensorReadout>& readout, const Camera& camera,
-                    const CameraOptions& cameraOptions, std::uint64_t seed);
+                    const CameraOptions& cameraOptions);
 
 }  // namespace lensrt

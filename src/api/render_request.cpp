@@ -58,7 +58,7 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   result.metadata = job.metadata(*camera, settings, done, request.commandLine);
   if (readout) readOut(*readout, done.output.image, result.metadata, settings.seed);
   if (!request.raw.file.empty() && finished)
-    writeRawOutput(request.raw, done.output.image, readout, *camera, request.camera, settings.seed);
+    writeRawOutput(request.raw, done.output.image, readout, *camera, request.camera);
   result.metadata["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
   result.image = std::move(done.output.image);
   result.seconds = done.seconds;

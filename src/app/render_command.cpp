@@ -246,7 +246,7 @@ int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
     else
       writeOutputImage(args.output, result.output.image, metadata);
     if (!args.raw.file.empty() && finished)
-      writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera, settings.seed);
+      writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera);
   }
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",

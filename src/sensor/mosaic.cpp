@@ -1,5 +1,7 @@
 #include "sensor/mosaic.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -20,10 +22,9 @@ std::optional<CfaPattern> parseCfaPattern(const std::string& name) {
 }
 
 Mosaic makeMosaic(const Image& image, const CfaPattern& pattern, const SensorParams* sensor,
-                  const SensorExposure* exposure, std::uint64_t seed, const std::string& noiseless) {
-  const int r = image.channelIndex(noiseless + "R"), g = image.channelIndex(noiseless + "G"),
-            b = image.channelIndex(noiseless + "B");
-  if (r < 0 || g < 0 || b < 0) throw std::invalid_argument("a mosaic needs " + noiseless + "R, G and B");
+                  const SensorExposure* exposure) {
+  const int r = image.channelIndex("R"), g = image.channelIndex("G"), b = image.channelIndex("B");
+  if (r < 0 || g < 0 || b < 0) throw std::invalid_argument("a mosaic needs R, G and B");
   const int channel[3] = {r, g, b};
   Mosaic m;
   m.width = image.width;
@@ -38,15 +39,20 @@ Mosaic makeMosaic(const Image& image, const CfaPattern& pattern, const SensorPar
     m.blackLevel = 0.0;
     m.whiteLevel = 65535.0;
   }
-  for (int y = 0; y < m.height; ++y)
+  const double dnPerValue =
+      sensor ? sensor->gainDnPerE * exposure->analogGain * exposure->electronsPerValue : 0.0;
+  tbb::parallel_for(0, m.height, [&](int y) {
     for (int x = 0; x < m.width; ++x) {
       const int fx = image.originX + x, fy = image.originY + y, colour = pattern.colourAt(fx, fy);
       const double value = image.at(x, y, channel[colour]);
-      const double dn = sensor
-                            ? readoutDn(*sensor, *exposure, value, fx, fy, colour, seed)
-                            : std::round(std::clamp(std::isfinite(value) ? value : 0.0, 0.0, 1.0) * 65535.0);
+      const double dn =
+          sensor ? std::clamp(
+                       std::round(sensor->blackLevelDn + (std::isfinite(value) ? value : 0.0) * dnPerValue),
+                       0.0, sensor->maxDn())
+                 : std::round(std::clamp(std::isfinite(value) ? value : 0.0, 0.0, 1.0) * 65535.0);
       m.dn[std::size_t(y) * std::size_t(m.width) + std::size_t(x)] = std::uint16_t(dn);
     }
+  });
   return m;
 }
 

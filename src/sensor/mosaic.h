@@ -30,15 +30,14 @@ struct Mosaic {
   double blackLevel = 0.0, whiteLevel = 0.0;
 };
 
-// Each photosite reads its CFA colour of `image`'s R, G, B. With a sensor
-// (--noise on) it is that sensor's readout of the noiseless value (the same
-// numbers as the image's channels got, for the colour a site records); the
-// white level is the DN of a full well, or the ADC's maximum. Without one
-// it is a 16-bit linear encoding: an image value of 1.0 is the white level
-// 65535, 0 the black level 0. `noiseless` names the channels to read:
-// "noiseless." after a readout, "" otherwise. (frameX, frameY) of the image's
-// pixels come from its origin, so a tile's mosaic is the frame's.
+// Each photosite holds its CFA colour of `image`'s R, G, B. After a sensor's
+// readout (applySensorReadout: R, G, B hold its readings in image units) that
+// is the DN the reading came from, exactly (the float holds a DN of up to 16
+// bits without loss); the white level is the DN of a full well, or the
+// ADC's maximum. Without a sensor it is a 16-bit linear encoding: an image
+// value of 1.0 is the white level 65535, 0 the black level 0. The pattern is
+// placed by the frame (the image's origin), so a tile's mosaic is the frame's.
 Mosaic makeMosaic(const Image& image, const CfaPattern& pattern, const SensorParams* sensor,
-                  const SensorExposure* exposure, std::uint64_t seed, const std::string& noiseless);
+                  const SensorExposure* exposure);
 
 }  // namespace lensrt

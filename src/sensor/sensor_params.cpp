@@ -72,7 +72,8 @@ SensorParams parseSensorParams(std::string_view text, const std::string& file) {
     // A number too large for a double, say: the library's words after its tag.
     const std::string what = e.what();
     const std::size_t tagEnd = what.find("] ");
-    throw InputError(file, "not valid JSON: " + (tagEnd == std::string::npos ? what : what.substr(tagEnd + 2)));
+    throw InputError(file,
+                     "not valid JSON: " + (tagEnd == std::string::npos ? what : what.substr(tagEnd + 2)));
   }
   if (!j.is_object()) throw InputError(file, "expected a JSON object of sensor parameters");
   SensorParams p;
