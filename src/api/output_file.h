@@ -3,6 +3,8 @@
 // image layer writes first.
 #pragma once
 
+#include <fmt/core.h>
+
 #include <filesystem>
 #include <optional>
 
@@ -23,6 +25,11 @@ std::optional<std::filesystem::path> createFolderFor(const std::filesystem::path
 // probe file, so read-only mounts, /proc and /sys are caught even for root),
 // or its disk is full.
 std::optional<std::filesystem::path> checkOutputFile(const std::filesystem::path& out);
+
+// One line on stderr when a command made the folder its output goes to.
+inline void noteCreatedFolder(const std::optional<std::filesystem::path>& folder, bool quiet) {
+  if (folder && !quiet) fmt::print(stderr, "lensrt: created folder {}\n", folder->string());
+}
 
 // writeImage, with a failure reported against `out` (a full disk as such).
 void writeOutputImage(const std::filesystem::path& out, const Image& image, const ImageMetadata& metadata);

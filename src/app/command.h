@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 
+#include "api/output_file.h"
+
 namespace lensrt {
 
 class Cluster;
@@ -23,12 +25,6 @@ struct CommandContext {
 // Returns the process exit status. Bad input is reported by throwing
 // InputError; main() prints it as one line and exits 1.
 using CommandAction = std::function<int()>;
-
-// One line when a command made the folder its output goes to
-// (api/output_file.h: createFolderFor, checkOutputFile).
-inline void noteCreatedFolder(const std::optional<std::filesystem::path>& folder, bool quiet) {
-  if (folder && !quiet) fmt::print(stderr, "lensrt: created folder {}\n", folder->string());
-}
 
 CommandAction addRenderCommand(CLI::App& app, const CommandContext& context);
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context);

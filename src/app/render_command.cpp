@@ -2,32 +2,20 @@
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
-#include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "api/camera_options.h"
-#include "api/output_file.h"
-#include "api/raw_output.h"
-#include "api/render_job.h"
 #include "api/render_options.h"
-#include "api/render_request.h"
-#include "api/sensor_readout.h"
 #include "app/camera_flags.h"
 #include "app/command.h"
 #include "app/option_checks.h"
 #include "app/render_flags.h"
-#include "cluster/checkpoint.h"
 #include "cluster/cluster.h"
-#include "cluster/distributed_render.h"
-#include "cluster/interrupt.h"
+#include "cluster/render_to_file.h"
 #include "core/error.h"
 
 namespace lensrt {
@@ -56,30 +44,6 @@ struct RenderArgs {
   CameraOptions camera;
 };
 
-// --crop X0,X1,Y0,Y1 or --tile I/N: the part of the frame to render.
-PixelRegion partOfFrame(const RenderArgs& args, int width, int height) {
-  const PixelRegion frame = PixelRegion::wholeFrame(width, height);
-  if (!args.tile.empty()) {
-    const auto slash = args.tile.find('/');
-    const int index = std::stoi(args.tile.substr(0, slash)), count = std::stoi(args.tile.substr(slash + 1));
-    if (count > height)
-      throw CLI::ValidationError("--tile",
-                                 fmt::format("{} tiles is more than the image's {} rows", count, height));
-    return frameStrip(index, count, width, height);
-  }
-  if (!args.crop.empty()) {
-    int v[4];
-    std::sscanf(args.crop.c_str(), "%d,%d,%d,%d", &v[0], &v[1], &v[2], &v[3]);
-    const PixelRegion crop{v[0], v[1], v[2], v[3]};
-    if (!frame.contains(crop))
-      throw CLI::ValidationError(
-          "--crop", fmt::format("{} is not inside the {}x{} image (X1 and Y1 at most {} and {})", args.crop,
-                                width, height, width, height));
-    return crop;
-  }
-  return frame;
-}
-
 std::string checkCrop(const std::string& text) {
   int v[4];
   char end = 0;
@@ -99,169 +63,41 @@ std::string checkTile(const std::string& text) {
   return "";
 }
 
-int runRender(const RenderArgs& givenArgs, const CommandContext& context) {
-  // Under MPI, rank 0 alone reads and writes the output and speaks; the
-  // other ranks load the scene, make the camera and render what it sends.
-  Cluster& cluster = *context.cluster;
-  const bool shared = cluster.size() > 1, leader = cluster.isMain();
-  RenderArgs args = givenArgs;
-  if (!leader) args.quiet = true;
-  // 1. Options.
-  SceneOptions sceneOptions;
-  sceneOptions.scene = args.scene;
-  sceneOptions.sceneIndex = args.sceneIndex;
-  sceneOptions.cameraNode = args.cameraNode;
-  if (!args.resolution.empty()) sceneOptions.resolution = parseResolution(args.resolution);
-  sceneOptions.environment = environmentSpec(args.environment);
-  sceneOptions.maxDepth = args.maxDepth;
-  sceneOptions.quiet = args.quiet;
-  sceneOptions.limits = sceneReadLimits(args.access);
-  RenderSettings settings;
+int runRender(const RenderArgs& args, const CommandContext& context) {
+  FileRender job;
+  SceneOptions& scene = job.scene;
+  scene.scene = args.scene;
+  scene.sceneIndex = args.sceneIndex;
+  scene.cameraNode = args.cameraNode;
+  if (!args.resolution.empty()) scene.resolution = parseResolution(args.resolution);
+  scene.environment = environmentSpec(args.environment);
+  scene.maxDepth = args.maxDepth;
+  scene.limits = sceneReadLimits(args.access);
+  job.camera = args.camera;
+  RenderSettings& settings = job.settings;
   settings.samplesPerPixel = args.spp;
   settings.seed = args.seed;
   settings.threads = args.threads;
   settings.tileSize = args.tileSize;
   settings.aovs = parseAovs(args.aovs);
-  // Everything that can be checked without rendering is checked first, so
-  // that a long render never ends in an error.
-  std::error_code ec;
-  if (leader) noteCreatedFolder(checkOutputFile(args.output), args.quiet);
-  if (leader) checkRawOutput(args.raw);
-  const bool exr = std::filesystem::path(args.output).extension() == ".exr";
-  if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
-    throw CLI::ValidationError("--checkpoint/--resume",
-                               "need an .exr output (-o OUT.exr), the image that is continued");
-  if (leader && !args.resume.empty() && !std::filesystem::exists(args.resume, ec))
-    throw InputError(args.resume, "no such checkpoint");
-  const std::string& envFile = sceneOptions.environment.file;
-  if (!envFile.empty() && !std::filesystem::exists(envFile, ec))
-    throw InputError(envFile, "environment map not found");
-  if (!envFile.empty() && !std::filesystem::is_regular_file(envFile, ec))
-    throw InputError(envFile, "the environment map is not a regular file");
-
-  // Warnings wait until the scene and camera are set up, so that a run that
-  // fails there prints its one error line alone.
-  std::vector<std::string> held;
-  bool holding = true;
-  const auto print = [&](const std::string& message) {
-    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
-  };
-  Warnings warnings([&](const std::string& message) {
-    if (holding)
-      held.push_back(message);
-    else
-      print(message);
-  });
-
-  // 2. Scene, lights, camera, render.
-  const RenderJob job(sceneOptions, warnings);
-  checkImageFitsInMemory(job.width(), job.height(), filmChannels(settings.aovs).size());
-  const PixelRegion region = partOfFrame(args, job.width(), job.height());
-  settings.region = region;
-  const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
-  const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film());
-  ImageMetadata identity = job.identity(*camera, settings);
-  addSensorIdentity(identity, readout);
-  // The running sums live on rank 0 alone: the other ranks get strips.
-  std::optional<FilmState> leaderState;
-  if (leader) {
-    leaderState = args.resume.empty() ? FilmState(region, settings.aovs)
-                                      : readCheckpoint(args.resume, identity, region);
-    if (leaderState->samplesDone() > settings.samplesPerPixel)
-      throw CLI::ValidationError(
-          "--spp", fmt::format("{} has {} samples per pixel already, more than --spp {}", args.resume,
-                               leaderState->samplesDone(), settings.samplesPerPixel));
+  job.output = args.output;
+  job.raw = args.raw;
+  // The syntax is checked by the flags' validators.
+  if (!args.tile.empty()) {
+    FileRender::Strip strip;
+    std::sscanf(args.tile.c_str(), "%d/%d", &strip.index, &strip.count);
+    job.tile = strip;
   }
-
-  holding = false;
-  for (const std::string& message : held) print(message);
-  if (shared) {
-    // Every rank is set up: go on together, or stop together with the first error.
-    if (const auto failure = setUpTogether(cluster, args.scene, identity)) {
-      if (leader)
-        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
-                   failure->line);
-      return failure->status;
-    }
+  if (!args.crop.empty()) {
+    PixelRegion crop;
+    std::sscanf(args.crop.c_str(), "%d,%d,%d,%d", &crop.x0, &crop.x1, &crop.y0, &crop.y1);
+    job.crop = crop;
   }
-  if (!leader) {
-    const InterruptHandler interrupt;
-    workForMain(cluster, *camera, job.integrator(), settings, [&] { return interrupt.signal(); });
-    return interrupt.signal() ? interrupt.exitStatus() : 0;
-  }
-  FilmState& state = *leaderState;
-
-  // Passes, checkpoints and signals (the handlers only while rendering).
-  const InterruptHandler interrupt;
-  const auto started = std::chrono::steady_clock::now();
-  auto lastCheckpoint = started;
-  GatherCost gather;  // under MPI, once the render is done
-  // The metadata of an image to write; with --noise on, the sensor reads it out first.
-  const auto metadataOf = [&](RenderJobResult& r) {
-    ImageMetadata m = job.metadata(*camera, settings, r, context.commandLine);
-    if (readout) readOut(*readout, r.output.image, m, settings.seed);
-    m["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
-    if (shared) m["lensrt:mpi_ranks"] = std::to_string(cluster.size());
-    if (gather.bytes > 0) {
-      m["lensrt:gather_seconds"] = fmt::format("{:.3f}", gather.seconds);
-      m["lensrt:gather_bytes"] = std::to_string(gather.bytes);
-    }
-    return m;
-  };
-  PassControl control;
-  control.stopRequested = [&] { return interrupt.signal() != 0; };
-  if (args.checkpointSeconds > 0)
-    control.afterPass = [&](const FilmState& s) {
-      const auto now = std::chrono::steady_clock::now();
-      if (std::chrono::duration<double>(now - lastCheckpoint).count() < args.checkpointSeconds) return;
-      RenderJobResult partial;
-      partial.output = renderOutput(*camera, s);
-      partial.seconds = std::chrono::duration<double>(now - started).count();
-      const ImageMetadata metadata = metadataOf(partial);
-      writeCheckpoint(args.output, s, partial.output.image, metadata);
-      lastCheckpoint = std::chrono::steady_clock::now();
-    };
-  bool finished = false;
-  int rankSignal = 0;  // a signal another rank received
-  RenderJobResult result;
-  if (shared) {
-    {
-      const int remaining = std::max(0, settings.samplesPerPixel - state.samplesDone());
-      Progress progress(region.pixelCount() * std::uint64_t(remaining),
-                        Progress::styleFor(stderr, args.quiet));
-      finished = renderAcrossRanks(cluster, *camera, job.integrator(), settings, state, control, &progress,
-                                   rankSignal, &gather);
-    }
-    result.output = renderOutput(*camera, state);
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  } else {
-    result = job.renderPasses(*camera, settings, state, control, args.quiet, finished);
-  }
-
-  // 3. Write: with the running sums when it can be continued.
-  {
-    const ImageMetadata metadata = metadataOf(result);
-    if (args.checkpointSeconds > 0 || !finished)
-      writeCheckpoint(args.output, state, result.output.image, metadata);
-    else
-      writeOutputImage(args.output, result.output.image, metadata);
-    if (!args.raw.file.empty() && finished)
-      writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera);
-  }
-  if (result.output.droppedSamples > 0 && !args.quiet)
-    fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
-               args.scene, result.output.droppedSamples);
-  if (!finished) {
-    if (!args.quiet)
-      fmt::print(stderr, "lensrt: interrupted: wrote {} with {} of {} spp (continue with --resume {})\n",
-                 args.output, state.samplesDone(), settings.samplesPerPixel, args.output);
-    return interrupt.signal() ? interrupt.exitStatus() : 128 + rankSignal;
-  }
-  if (!args.quiet)
-    fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output,
-               result.output.image.width, result.output.image.height, args.spp, result.seconds,
-               camera->describe());
-  return 0;
+  job.checkpointSeconds = args.checkpointSeconds;
+  job.resume = args.resume;
+  job.quiet = args.quiet;
+  job.commandLine = context.commandLine;
+  return renderToFile(job, *context.cluster);
 }
 
 }  // namespace
