@@ -31,5 +31,6 @@ CommandAction addLensCommand(CLI::App& app, const CommandContext& context);
 CommandAction addDiffCommand(CLI::App& app, const CommandContext& context);
 CommandAction addCompareCommand(CLI::App& app, const CommandContext& context);
 CommandAction addMergeCommand(CLI::App& app, const CommandContext& context);
+CommandAction addSensorCommand(CLI::App& app, const CommandContext& context);
 
 }  // namespace lensrt

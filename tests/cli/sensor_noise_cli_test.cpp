@@ -75,5 +75,29 @@ TEST(SensorNoiseCli, TilesReadOutTheWholeFramesNumbers) {
   EXPECT_NE(mixed.err.find("settings"), std::string::npos) << mixed.err;
 }
 
+// `lensrt sensor list --json` prints each preset as a sensor file holds it:
+// written out and given back, it reads out the preset's very numbers.
+TEST(SensorNoiseCli, ListedPresetsAreSensorFiles) {
+  const TempDir dir;
+  const RunResult list = runLensrt({"sensor", "list", "--json"});
+  ASSERT_EQ(list.status, 0) << list.err;
+  const RunResult text = runLensrt({"sensor", "list"});
+  for (const char* name : {"default", "full-frame", "smartphone", "machine-vision"})
+    EXPECT_NE(text.out.find(name), std::string::npos) << name;
+  // The third preset (smartphone), cut out of the array by its braces.
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) start = list.out.find('{', start + (i ? 1 : 0));
+  const std::string one = list.out.substr(start, list.out.find('}', start) - start + 1);
+  ASSERT_NE(one.find("\"smartphone\""), std::string::npos) << one;
+  cli::writeFile(dir / "phone.json", one);
+  std::vector<std::string> fromFile = renderArgs(dir / "file.exr", {});
+  fromFile[17] = (dir / "phone.json").string();
+  ASSERT_EQ(runLensrt(fromFile).status, 0);
+  ASSERT_EQ(runLensrt(renderArgs(dir / "preset.exr", {})).status, 0);
+  const RunResult same =
+      runLensrt({"diff", (dir / "file.exr").string(), (dir / "preset.exr").string(), "--fail", "0"});
+  EXPECT_EQ(same.status, 0) << same.out;
+}
+
 }  // namespace
 }  // namespace lensrt
