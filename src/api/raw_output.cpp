@@ -26,7 +26,14 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
                                 : makeMosaic(image, pattern, nullptr, nullptr);
   const CameraInfo info = camera.info();
   DngDescription d;
-  d.pattern = pattern;
+  // The pattern is placed by the frame (a tile's mosaic is the frame's): the
+  // file declares it as seen from its own first pixel.
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) {
+      const int colour = pattern.colourAt(image.originX + x, image.originY + y);
+      d.pattern.colours[std::size_t(y * 2 + x)] = colour;
+      d.pattern.name[std::size_t(y * 2 + x)] = "RGB"[colour];
+    }
   d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
   d.colorMatrix1 = kXyzToLinearSrgb;
   d.exposureSeconds = parseShutter(options.shutter.empty() ? "1/100" : options.shutter);

@@ -133,6 +133,17 @@ TEST(RawDng, DcrawReturnsTheMosaicLensrtWrote) {
   expectMosaicOf(dir, "RGGB", true);
 }
 
+// A crop starting on an odd row and column: the file declares the pattern as
+// seen from its first pixel (the frame's RGGB is BGGR... from (1, 1)).
+TEST(RawDng, ACropDeclaresItsOwnPhaseOfThePattern) {
+  if (!haveDevelopers()) GTEST_SKIP() << "dcraw not installed (tools/setup installs it)";
+  const TempDir dir;
+  ASSERT_EQ(render(dir, {"--crop", "1,30,1,23"}).status, 0);
+  const RunResult d = runProgram("dcraw", {"-i", "-v", (dir / "a.dng").string()});
+  EXPECT_NE(d.out.find("Filter pattern: BG/GR"), std::string::npos) << d.out;
+  expectMosaicOf(dir, "BGGR", false);
+}
+
 TEST(RawDng, AGreyCardDevelopsNeutral) {
   if (!haveDevelopers()) GTEST_SKIP() << "dcraw not installed (tools/setup installs it)";
   const TempDir dir;
