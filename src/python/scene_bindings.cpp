@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -166,7 +167,11 @@ class PyScene {
       if (std::find(known.begin(), known.end(), name) == known.end())
         throw py::value_error("unknown option '" + name + "' (see help(lensrt.Scene.render))");
     }
+    // Every keyword read is noted: one accepted but never read is a bug
+    // (raw= once was), caught below before any work.
+    std::vector<std::string> read;
     const auto get = [&](const char* name) -> py::object {
+      read.emplace_back(name);
       return given.contains(name) ? py::reinterpret_borrow<py::object>(given[name]) : py::none();
     };
     RenderRequest request;
@@ -224,6 +229,9 @@ class PyScene {
     s.aovs = parseAovs(toTextList(get("aov"), "aov"));
     s.region = toCrop(get("crop"));
     const py::object callback = get("progress");
+    for (const std::string& name : known)
+      if (std::find(read.begin(), read.end(), name) == read.end())
+        throw std::logic_error("lensrt.Scene.render: keyword '" + name + "' is accepted but never read");
     if (!callback.is_none() && !PyCallable_Check(callback.ptr()))
       badArgument("progress", "a callable progress(done_spp, total_spp) or None", callback);
     // The EXR's lensrt:command_line: the call, as Python would print it.

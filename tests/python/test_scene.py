@@ -131,6 +131,25 @@ def test_ctrl_c_stops_the_render_at_the_end_of_a_pass(tmp_path):
     assert time.monotonic() - sent < 10
 
 
+def test_every_keyword_is_read(dof, tmp_path):
+    # Each keyword with a value other than its default: render() refuses a
+    # keyword it accepts but never reads, and each changes what it should.
+    pose = np.eye(4)
+    pose[1, 3] = 1.2
+    result = dof.render(camera="lens", lens="dgauss-50mm", fstop=4, focus="auto", focus_pixel=(4, 4),
+                        sensor="aps-c", res=(24, 16), spp=2, seed=3, aov=("depth",), env="constant:0.5",
+                        env_rotate=10, env_intensity=0.5, max_depth=3, camera_node=0, camera_to_world=pose,
+                        threads=1, crop=(0, 24, 0, 16), blades=6, blade_rotation=15, aperture_mask=None,
+                        focal_length=None, exposure="physical", shutter=1 / 250, iso=400, dispersion=False,
+                        coatings="multi", film="irradiance", noise=True, sensor_params="smartphone",
+                        raw=tmp_path / "a.dng", cfa="GRBG", progress=lambda done, total: None)
+    m = result.metadata
+    assert "f/4" in m["lensrt:camera"] and "physical 0.004s ISO400" in m["lensrt:exposure"]
+    assert m["lensrt:coatings"] == "multi" and m["lensrt:dispersion"] == "off"
+    assert "smartphone" in m["lensrt:sensor_noise"] and (tmp_path / "a.dng").exists()
+    assert "max_depth=3" in m["lensrt:settings"] and m["lensrt:seed"] == "3"
+
+
 def test_render_help_lists_every_keyword_of_the_stub():
     stub = ast.parse((pathlib.Path(lensrt.__file__).parent / "__init__.pyi").read_text())
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
