@@ -40,17 +40,11 @@ namespace {
 constexpr std::array<const char*, 4> kModels = {"pinhole", "thin", "thick", "lens"};
 
 struct CompareArgs {
-  std::string scene;
+  SceneArgs frame;  // the scene file and its frame
   std::string outputDir;
   int spp = 16;
-  std::string resolution;
-  int maxDepth = 8;
   int threads = 0;
   std::uint64_t seed = 0;
-  std::string cameraNode;
-  int sceneIndex = -1;
-  EnvironmentArgs environment;
-  SceneAccessArgs access;
   int tileSize = 16;
   bool quiet = false;
   CameraOptions camera;
@@ -125,15 +119,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     throw UsageError(args.camera.noise != "off" ? "--noise" : "--sensor-params",
                      "lensrt compare compares the models' noiseless images; lensrt render --noise on reads "
                      "one out through a sensor");
-  SceneOptions sceneOptions;
-  sceneOptions.scene = args.scene;
-  sceneOptions.sceneIndex = args.sceneIndex;
-  sceneOptions.cameraNode = args.cameraNode;
-  if (!args.resolution.empty()) sceneOptions.resolution = parseResolution(args.resolution);
-  sceneOptions.environment = environmentSpec(args.environment);
-  sceneOptions.maxDepth = args.maxDepth;
-  sceneOptions.quiet = args.quiet;
-  sceneOptions.limits = sceneReadLimits(args.access);
+  const SceneOptions sceneOptions = lensrt::sceneOptions(args.frame, args.quiet);
   RenderSettings settings;
   settings.samplesPerPixel = args.spp;
   settings.seed = args.seed;
@@ -146,7 +132,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
       leader ? prepareOutputDir(args.outputDir, args.quiet) : std::filesystem::path();
 
   Warnings warnings([&](const std::string& message) {
-    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene, message);
+    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.frame.scene, message);
   });
   const RenderJob job(sceneOptions, warnings);
   const nlohmann::json lens = lensFigures(args.camera);
@@ -173,7 +159,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   if (cluster.size() > 1) {
     // The full lens's identity covers the scene, the lens and the settings.
     if (const auto failure =
-            setUpTogether(*context.cluster, args.scene, job.identity(*cameras.back(), settings))) {
+            setUpTogether(*context.cluster, args.frame.scene, job.identity(*cameras.back(), settings))) {
       if (leader)
         fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
                    failure->line);
@@ -265,7 +251,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
       {"command_line", context.commandLine},
       {"model_order", kModels},
       {"settings",
-       {{"scene", args.scene},
+       {{"scene", args.frame.scene},
         {"lens", args.camera.lens},
         {"f_number", lensInfo.fNumber},
         {"focus", args.camera.focus},
@@ -278,7 +264,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
         {"height", job.height()},
         {"spp", args.spp},
         {"seed", args.seed},
-        {"max_depth", args.maxDepth},
+        {"max_depth", args.frame.maxDepth},
         {"environment", job.environmentDescription()}}},
       {"lens", lens},
       {"heatmap_scale", heatmap.scaleMax},
@@ -303,7 +289,7 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
       "Example: lensrt compare scenes/dof_row.gltf --lens dgauss-50mm --fstop 2 --focus 2 --spp 64 "
       "--res 640x360 -o out/cmp");
   auto args = std::make_shared<CompareArgs>();
-  cmd->add_option("scene", args->scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
+  cmd->add_option("scene", args->frame.scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
       ->required();
   cmd->add_option("-o,--output", args->outputDir,
                   "output directory, created (with its missing parents) if missing, e.g. -o out/cmp")
@@ -311,11 +297,12 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("--spp", args->spp, "samples per pixel for every model (>= 1), e.g. --spp 64")
       ->check(CLI::Range(1, 1 << 24))
       ->capture_default_str();
-  cmd->add_option("--res", args->resolution,
+  cmd->add_option("--res", args->frame.resolution,
                   "image size in pixels WIDTHxHEIGHT, e.g. --res 640x360 (default 640 wide, height from the "
                   "glTF camera's aspect ratio or 360)")
       ->check([](const std::string& s) { return checkResolution(s); });
-  cmd->add_option("--max-depth", args->maxDepth, "maximum scattering events per path, e.g. --max-depth 8")
+  cmd->add_option("--max-depth", args->frame.maxDepth,
+                  "maximum scattering events per path, e.g. --max-depth 8")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "worker threads (0: all cores), e.g. --threads 4")
@@ -323,11 +310,11 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "random seed, the same for every model, e.g. --seed 7")
       ->capture_default_str();
-  cmd->add_option("--camera-node", args->cameraNode, "camera to render: a glTF node name or index");
-  cmd->add_option("--scene-index", args->sceneIndex, "which glTF scene to render (0-based)")
+  cmd->add_option("--camera-node", args->frame.cameraNode, "camera to render: a glTF node name or index");
+  cmd->add_option("--scene-index", args->frame.sceneIndex, "which glTF scene to render (0-based)")
       ->check(CLI::Range(-1, 1 << 20));
-  addEnvironmentOptions(*cmd, args->environment);
-  addSceneAccessOptions(*cmd, args->access);
+  addEnvironmentOptions(*cmd, args->frame.environment);
+  addSceneAccessOptions(*cmd, args->frame.access);
   cmd->add_option("--tile-size", args->tileSize,
                   "tile size in pixels for scheduling (does not change the images)")
       ->check(CLI::Range(1, 4096))

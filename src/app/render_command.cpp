@@ -22,17 +22,11 @@ namespace lensrt {
 namespace {
 
 struct RenderArgs {
-  std::string scene;
+  SceneArgs frame;  // the scene file and its frame
   std::string output;
   int spp = 16;
-  std::string resolution;
-  int maxDepth = 8;
   int threads = 0;
   std::uint64_t seed = 0;
-  std::string cameraNode;
-  int sceneIndex = -1;
-  EnvironmentArgs environment;
-  SceneAccessArgs access;
   std::vector<std::string> aovs;
   int tileSize = 16;
   std::string crop;
@@ -65,14 +59,7 @@ std::string checkTile(const std::string& text) {
 
 int runRender(const RenderArgs& args, const CommandContext& context) {
   FileRender job;
-  SceneOptions& scene = job.scene;
-  scene.scene = args.scene;
-  scene.sceneIndex = args.sceneIndex;
-  scene.cameraNode = args.cameraNode;
-  if (!args.resolution.empty()) scene.resolution = parseResolution(args.resolution);
-  scene.environment = environmentSpec(args.environment);
-  scene.maxDepth = args.maxDepth;
-  scene.limits = sceneReadLimits(args.access);
+  job.scene = sceneOptions(args.frame, args.quiet);
   job.camera = args.camera;
   RenderSettings& settings = job.settings;
   settings.samplesPerPixel = args.spp;
@@ -108,7 +95,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
                                      "Example: lensrt render scenes/dof_row.gltf --spp 64 --res 640x360 "
                                      "--aov depth,variance -o out/dof_row.exr");
   auto args = std::make_shared<RenderArgs>();
-  cmd->add_option("scene", args->scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
+  cmd->add_option("scene", args->frame.scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "output image: .exr (linear float, all channels and metadata) or .png/.jpg (sRGB preview), "
@@ -118,12 +105,12 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
       ->check(integerIn(1, 1 << 24, "samples per pixel"))
       ->capture_default_str();
   cmd->add_option(
-         "--res", args->resolution,
+         "--res", args->frame.resolution,
          "image size in pixels WIDTHxHEIGHT, e.g. --res 640x360; a WIDTH alone takes the height from the "
          "glTF camera's aspect ratio (default 640 wide, height from the camera's aspect ratio or 360)")
       ->check([](const std::string& s) { return checkResolution(s); });
   cmd->add_option(
-         "--max-depth", args->maxDepth,
+         "--max-depth", args->frame.maxDepth,
          "maximum scattering events per path (0: emitters only, 1: direct light), e.g. --max-depth 8")
       ->check(integerIn(0, 1024, "scattering events per path"))
       ->capture_default_str();
@@ -134,15 +121,15 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
       ->check(integerIn<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
       ->capture_default_str();
   cmd->add_option(
-      "--camera-node", args->cameraNode,
+      "--camera-node", args->frame.cameraNode,
       "camera to render: a glTF node name or index, e.g. --camera-node 3 (default: the scene's first "
       "camera, else a view framing the scene)");
   cmd->add_option(
-         "--scene-index", args->sceneIndex,
+         "--scene-index", args->frame.sceneIndex,
          "which glTF scene to render (0-based; default: the file's default scene), e.g. --scene-index 1")
       ->check(integerIn(0, 1 << 20, "0-based"));
-  addEnvironmentOptions(*cmd, args->environment);
-  addSceneAccessOptions(*cmd, args->access);
+  addEnvironmentOptions(*cmd, args->frame.environment);
+  addSceneAccessOptions(*cmd, args->frame.access);
   cmd->add_option(
          "--aov", args->aovs,
          "extra EXR channels, comma separated: depth (depth.Z, metres), normal (normal.X/Y/Z, world), "

@@ -4,6 +4,19 @@
 
 namespace lensrt {
 
+SceneOptions sceneOptions(const SceneArgs& args, bool quiet) {
+  SceneOptions o;
+  o.scene = args.scene;
+  o.sceneIndex = args.sceneIndex;
+  o.cameraNode = args.cameraNode;
+  if (!args.resolution.empty()) o.resolution = parseResolution(args.resolution);
+  o.environment = environmentSpec(args.environment);
+  o.maxDepth = args.maxDepth;
+  o.quiet = quiet;
+  o.limits = sceneReadLimits(args.access);
+  return o;
+}
+
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentArgs& args) {
   cmd.add_option(
          "--env", args.environment,

@@ -4,9 +4,24 @@
 
 #include <CLI/CLI.hpp>
 
+#include "api/render_job.h"
 #include "api/render_options.h"
 
 namespace lensrt {
+
+// The scene flags `lensrt render` and `lensrt compare` share: the file and its frame.
+struct SceneArgs {
+  std::string scene;
+  std::string resolution;  // --res; empty: the default
+  int maxDepth = 8;
+  std::string cameraNode;
+  int sceneIndex = -1;
+  EnvironmentArgs environment;
+  SceneAccessArgs access;
+};
+
+// The api's options of those flags (UsageError for a bad --res or --env).
+SceneOptions sceneOptions(const SceneArgs& args, bool quiet);
 
 void addEnvironmentOptions(CLI::App& command, EnvironmentArgs& args);
 // --allow-external-files (or LENSRT_ALLOW_EXTERNAL_FILES=1) and --max-texture-memory MIB.
