@@ -16,11 +16,8 @@ std::string SensorReadout::describe() const {
 }
 
 std::optional<SensorReadout> sensorReadout(const CameraOptions& o, const FilmGeometry& film) {
-  if (o.noise == "off") {
-    if (!o.sensorParams.empty())
-      throw UsageError("--sensor-params", "describes the sensor's noise, which needs --noise on");
-    return std::nullopt;
-  }
+  // checkCameraOptions (run by makeCamera, before this) refused --sensor-params without --noise on.
+  if (o.noise == "off") return std::nullopt;
   SensorReadout r;
   r.params = sensorParams(o.sensorParams.empty() ? "default" : o.sensorParams);
   const double shutter = parseShutter(o.shutter.empty() ? "1/100" : o.shutter);

@@ -20,9 +20,9 @@ struct SensorReadout {
   std::string describe() const;
 };
 
-// None with --noise off. Physical exposure gives electrons from the lux
-// seconds on a pixel of the film's pitch; normalized exposure fills the well
-// at an image value of 1.0. Throws UsageError / InputError for bad settings.
+// None with --noise off (options checked by checkCameraOptions). Physical exposure gives electrons from the
+// lux seconds on a pixel of the film's pitch; normalized exposure fills the well at an image value of 1.0.
+// Throws UsageError / InputError for bad settings.
 std::optional<SensorReadout> sensorReadout(const CameraOptions& options, const FilmGeometry& film);
 
 // Appends " sensor_noise=NAME" to lensrt:settings (an identity key: a noisy

@@ -175,8 +175,8 @@ void collectMetadata(const Imf::Header& header, ImageMetadata& metadata) {
 // kept in metadata as text: numbers, 16 for worldToCamera (Imath's row-vector
 // order) and 8 for chromaticities (red, green, blue, white x y). Written with
 // their standard types; text that does not parse is left out.
-constexpr std::array<const char*, 6> kStandardFloatKeys{"aperture", "focus",         "expTime",
-                                                        "isoSpeed", "worldToCamera", "chromaticities"};
+constexpr std::array<const char*, 6> kStandardKeys{"aperture", "focus",         "expTime",
+                                                   "isoSpeed", "worldToCamera", "chromaticities"};
 
 std::vector<float> numbersOf(const std::string& text) {
   std::vector<float> out;
@@ -207,7 +207,7 @@ void insertStandardAttribute(Imf::Header& header, const std::string& key, const 
 }
 
 bool isStandardKey(const std::string& key) {
-  for (const char* k : kStandardFloatKeys)
+  for (const char* k : kStandardKeys)
     if (key == k) return true;
   return false;
 }

@@ -23,7 +23,8 @@ long long toInteger(py::handle value, const char* name, long long lo, long long 
 bool toBool(py::handle value, const char* name);
 std::string toText(py::handle value, const char* name);      // str
 std::string toPathText(py::handle value, const char* name);  // str or os.PathLike
-// A distance in metres (number, or "inf") as the command line's text.
+// A distance in metres as the command line's text: a number, or text passed
+// on as the flag's ("inf", "auto"), which the flag's own parser checks.
 std::string toDistanceText(py::handle value, const char* name);
 // "WxH" text or a (width, height) pair in mm, as text.
 std::string toSensorText(py::handle value, const char* name);

@@ -13,6 +13,7 @@
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "python/json_objects.h"
+#include "python/render_result.h"
 
 namespace lensrt::python {
 namespace {
@@ -29,27 +30,9 @@ double threshold(py::handle value, const char* name, double lo, double hi, doubl
 
 // A file (read here) or a RenderResult's image (its name says which render).
 ComparedImage comparedImage(py::handle value, const char* name) {
-  const py::object resultType = py::module_::import("lensrt").attr("RenderResult");
-  if (py::isinstance(value, resultType)) {
-    const py::dict channels = value.attr("channels");
-    ComparedImage c;
-    c.name = name;
-    const py::dict metadata = value.attr("metadata");
-    for (const auto& [k, v] : metadata) c.metadata[py::str(k)] = py::str(v);
-    // The channels' views share the render's interleaved pixels.
-    const py::array r = channels["R"];
-    c.image.height = int(r.shape(0));
-    c.image.width = int(r.shape(1));
-    for (const auto& [k, v] : channels) c.image.channels.push_back(py::str(k));
-    const auto count = c.image.channels.size();
-    c.image.pixels.resize(std::size_t(c.image.width) * c.image.height * count);
-    for (std::size_t ch = 0; ch < count; ++ch) {
-      const auto view = channels[py::str(c.image.channels[ch])].cast<py::array_t<float>>();
-      const auto u = view.unchecked<2>();
-      for (int y = 0; y < c.image.height; ++y)
-        for (int x = 0; x < c.image.width; ++x) c.image.at(x, y, int(ch)) = u(y, x);
-    }
-    return c;
+  if (py::isinstance<PyRenderResult>(value)) {
+    const RenderResult& r = value.cast<const PyRenderResult&>().result;
+    return {name, r.image, r.metadata};
   }
   const std::string file = toPathText(value, name);
   ComparedImage c{file, {}, {}};

@@ -26,23 +26,10 @@
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "python/json_objects.h"
+#include "python/warning_list.h"
 
 namespace lensrt::python {
 namespace {
-
-// Python warnings for the optics' warnings (a stop-down clamped, ...).
-class WarningList {
- public:
-  Warnings& sink() { return warnings_; }
-  void emit() const {
-    for (const std::string& w : list_)
-      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
-  }
-
- private:
-  std::vector<std::string> list_;
-  Warnings warnings_{[this](const std::string& w) { list_.push_back(w); }};
-};
 
 std::optional<Coating> toCoating(py::handle value) {
   if (value.is_none()) return std::nullopt;
@@ -83,15 +70,13 @@ class PyLens {
     if (settings.circleOfConfusionMm && !(*settings.circleOfConfusionMm > 0))
       throw UsageError("--coc", "must be positive");
     settings.coating = toCoating(coatings).value_or(Coating::None);
-    std::vector<std::string> list;
-    Warnings warnings([&](const std::string& w) { list.push_back(w); });
+    WarningList warnings;
     requireRealImage(lens_);
     const nlohmann::json json = withLensErrors(lens_, [&] {
-      const LensInfo info = lensInfo(lens_.prescription, settings, warnings);
-      return lensInfoJson(info, list);
+      const LensInfo info = lensInfo(lens_.prescription, settings, warnings.sink());
+      return lensInfoJson(info, warnings.messages());
     });
-    for (const std::string& w : list)
-      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) != 0) throw py::error_already_set();
+    warnings.emit();
     return toPython(json);
   }
 

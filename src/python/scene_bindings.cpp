@@ -24,19 +24,14 @@
 #include "core/transform.h"
 #include "python/arguments.h"
 #include "python/bindings.h"
+#include "python/render_result.h"
+#include "python/warning_list.h"
 
 namespace lensrt::python {
 namespace {
 
 // How far a pose's 3x3 part may be from a rotation (float32 poses pass).
 constexpr double kRigidTolerance = 1e-4;
-
-void emitWarnings(const std::vector<std::string>& list, const std::string& file) {
-  for (const std::string& w : list) {
-    const std::string text = file + ": " + w;
-    if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 2) != 0) throw py::error_already_set();
-  }
-}
 
 Transform toPose(py::handle value) {
   const auto m = toFiniteMatrix(value, "camera_to_world", 4, 4);
@@ -108,11 +103,6 @@ std::optional<PixelRegion> toCrop(py::handle value) {
   return r;
 }
 
-// A render's pixels, shared by the arrays that view them.
-struct PyRenderResult {
-  RenderResult result;
-};
-
 // An H x W (x channels) float32 view of channels [first, first + count) of the
 // interleaved image, kept alive by `owner`.
 py::array channelView(py::object owner, int first, int count) {
@@ -139,13 +129,12 @@ class PyScene {
     if (!maxTextureMiB.is_none())
       access.maxTextureMiB = std::uint64_t(toInteger(maxTextureMiB, "max_texture_memory", 1, 1LL << 40));
     options.limits = sceneReadLimits(access);
-    std::vector<std::string> list;
-    Warnings warnings([&](const std::string& w) { list.push_back(w); });
+    WarningList warnings(options.file);
     {
       const py::gil_scoped_release release;
-      scene_ = std::make_shared<const Scene>(options, warnings);
+      scene_ = std::make_shared<const Scene>(options, warnings.sink());
     }
-    emitWarnings(list, options.file);
+    warnings.emit();
   }
 
   const std::string& file() const { return scene_->options().file; }
@@ -180,8 +169,8 @@ class PyScene {
     if (const py::object v = get("camera"); !v.is_none()) c.model = toText(v, "camera");
     if (const py::object v = get("lens"); !v.is_none()) c.lens = toPathText(v, "lens");
     c.fNumber = toOptionalDouble(get("fstop"), "fstop");
-    if (const py::object v = get("focus"); !v.is_none())
-      c.focus = py::isinstance<py::str>(v) ? v.cast<std::string>() : toDistanceText(v, "focus");
+    // "auto", "inf", or metres as text or a number.
+    if (const py::object v = get("focus"); !v.is_none()) c.focus = toDistanceText(v, "focus");
     c.focusPixel = toFocusPixel(get("focus_pixel"));
     if (const py::object v = get("sensor"); !v.is_none()) c.sensor = toSensorText(v, "sensor");
     if (const py::object v = get("blades"); !v.is_none()) c.blades = int(toInteger(v, "blades", 0, 64));
@@ -261,19 +250,17 @@ class PyScene {
         return false;
       }
     };
-    std::vector<std::string> list;
-    Warnings warnings([&](const std::string& w) { list.push_back(w); });
+    WarningList warnings(file());
     auto out = std::make_unique<PyRenderResult>();
     {
       const py::gil_scoped_release release;
-      out->result = lensrt::render(scene_, request, warnings, progress);
+      out->result = lensrt::render(scene_, request, warnings.sink(), progress);
     }
     if (pending) throw *pending;
-    emitWarnings(list, file());
     if (out->result.droppedSamples > 0)
-      emitWarnings(
-          {fmt::format("{} samples with NaN or infinite radiance were dropped", out->result.droppedSamples)},
-          file());
+      warnings.sink().warn(
+          fmt::format("{} samples with NaN or infinite radiance were dropped", out->result.droppedSamples));
+    warnings.emit();
     return out;
   }
 
