@@ -108,6 +108,10 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
                                     const HitDistance& hitDistance);
 }  // namespace
 
+double shutterSeconds(const CameraOptions& o) {
+  return o.shutter.empty() ? Exposure{}.shutterSeconds : parseShutter(o.shutter);
+}
+
 void checkCameraOptions(const CameraOptions& o) {
   const auto oneOf = [](const char* flag, const std::string& value,
                         std::initializer_list<const char*> names) {
@@ -209,7 +213,7 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   const Transform& worldFromCamera = gltf.worldFromCamera;
   Exposure exposure;
   exposure.mode = o.exposure == "physical" ? ExposureMode::Physical : ExposureMode::Normalized;
-  if (!o.shutter.empty()) exposure.shutterSeconds = parseShutter(o.shutter);
+  exposure.shutterSeconds = shutterSeconds(o);
   if (o.iso) exposure.iso = *o.iso;
   const std::optional<ParaxialData> paraxial = lens ? std::optional(computeParaxial(*lens)) : std::nullopt;
   const double fNumber = o.fNumber ? *o.fNumber : paraxial ? paraxial->fNumber : 2.8;

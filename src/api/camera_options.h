@@ -63,6 +63,8 @@ Vec2d parseFocusPixel(const std::string& text);
 Vec2d parseSensor(const std::string& text);
 // Seconds from "0.004", "1/250" or "2". Throws UsageError.
 double parseShutter(const std::string& text);
+// --shutter of these options, else the exposure's default (1/100 s).
+double shutterSeconds(const CameraOptions& options);
 
 // The film: the sensor cropped to the raster's aspect ratio (square pixels),
 // as a camera's video or crop modes do.

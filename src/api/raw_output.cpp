@@ -36,7 +36,7 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
     }
   d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
   d.colorMatrix1 = kXyzToLinearSrgb;
-  d.exposureSeconds = parseShutter(options.shutter.empty() ? "1/100" : options.shutter);
+  d.exposureSeconds = shutterSeconds(options);
   d.iso = options.exposure == "physical" ? options.iso.value_or(100.0)
                                          : (readout ? readout->params.baseIso : 100.0);
   d.fNumber = info.fNumber;

@@ -44,12 +44,8 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   FilmState state(region, settings.aovs);
   // The command line's passes, so that the bits are its bits.
   PassControl control;
-  bool stopped = false;
   if (progress)
-    control.stopRequested = [&] {
-      stopped = !progress(state.samplesDone(), settings.samplesPerPixel);
-      return stopped;
-    };
+    control.stopRequested = [&] { return !progress(state.samplesDone(), settings.samplesPerPixel); };
   bool finished = false;
   RenderJobResult done = job.renderPasses(*camera, settings, state, control, true, finished);
   if (progress && finished) progress(state.samplesDone(), settings.samplesPerPixel);

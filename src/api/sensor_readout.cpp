@@ -20,7 +20,7 @@ std::optional<SensorReadout> sensorReadout(const CameraOptions& o, const FilmGeo
   if (o.noise == "off") return std::nullopt;
   SensorReadout r;
   r.params = sensorParams(o.sensorParams.empty() ? "default" : o.sensorParams);
-  const double shutter = parseShutter(o.shutter.empty() ? "1/100" : o.shutter);
+  const double shutter = shutterSeconds(o);
   if (o.exposure == "physical") {
     const double pitchX = film.sensorWidthMm / film.width * 1e-3,
                  pitchY = film.sensorHeightMm / film.height * 1e-3;
