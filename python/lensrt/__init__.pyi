@@ -118,6 +118,7 @@ class Scene:
         dispersion: str | bool = "on",
         coatings: str | None = None,
         film: str | None = None,
+        spectral: str | bool = "on",
         noise: str | bool = "off",
         sensor_params: _Path | None = None,
         raw: _Path | None = None,

@@ -141,6 +141,7 @@ void checkCameraOptions(const CameraOptions& o) {
   oneOf("--dispersion", o.dispersion, {"on", "off"});
   if (!o.coatings.empty()) oneOf("--coatings", o.coatings, {"none", "single", "multi"});
   if (!o.film.empty()) oneOf("--film", o.film, {"radiance", "irradiance"});
+  oneOf("--spectral", o.spectral, {"on", "off"});
   oneOf("--noise", o.noise, {"on", "off"});
   if (o.noise == "off" && !o.sensorParams.empty())
     throw UsageError("--sensor-params", "describes the sensor's noise, which needs --noise on");

@@ -47,6 +47,9 @@ struct CameraOptions {
   // "radiance", "irradiance", or empty for the model's default: radiance for
   // the pinhole, irradiance for thin, thick and lens (which refuse radiance).
   std::string film;
+  // --spectral on: light is carried at four wavelengths per sample
+  // (render/wavelengths.h); off: in RGB.
+  std::string spectral = "on";
   std::string noise = "off";      // --noise on: the sensor's readout (api/sensor_readout.h)
   std::string sensorParams;       // --sensor-params NAME|FILE.json; empty: the default sensor
   std::filesystem::path lensDir;  // the library; addCameraOptions sets the installed one

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "api/film_colour.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "image/image_io.h"
@@ -206,8 +207,9 @@ ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& se
   return {
       {"lensrt:scene_sha256", scene_->digest(frame_.environment.file)},
       {"lensrt:camera", camera.describe()},
-      {"lensrt:settings", fmt::format("res={}x{} max_depth={} environment={} channels={}", width_, height_,
-                                      frame_.maxDepth, environment_->describe(), aovs)},
+      {"lensrt:settings", fmt::format("res={}x{} max_depth={} environment={} channels={} transport={}",
+                                      width_, height_, frame_.maxDepth, environment_->describe(), aovs,
+                                      transportDescription(settings.filmResponse.get()))},
       {"lensrt:seed", std::to_string(settings.seed)},
   };
 }

@@ -74,6 +74,13 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "default, pinhole only) or irradiance (the physical film, scaled by --exposure; the default "
                  "of thin, thick and lens)")
       ->check(CLI::IsMember({"radiance", "irradiance"}));
+  cmd.add_option("--spectral", o.spectral,
+                 "on (default): light travels at four wavelengths per sample (a hero and three rotated "
+                 "copies), glTF colours upsampled to smooth spectra, the film the CIE 1931 observer in "
+                 "linear sRGB; scene glass with KHR_materials_dispersion and the lens disperse in the same "
+                 "transport. off: RGB transport")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cmd.add_option("--noise", o.noise,
                  "on: the sensor reads the exposure out as a camera does: photo-electrons (from the lux "
                  "seconds on a pixel with --exposure physical, else 1.0 = full well), shot noise, dark "

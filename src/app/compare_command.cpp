@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "api/camera_options.h"
+#include "api/film_colour.h"
 #include "api/render_job.h"
 #include "api/render_options.h"
 #include "api/text_file.h"
@@ -125,6 +126,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   settings.seed = args.seed;
   settings.threads = args.threads;
   settings.tileSize = args.tileSize;
+  settings.filmResponse = filmResponse(args.camera);
   const std::string& envFile = sceneOptions.environment.file;
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
     throw InputError(envFile, "environment map not found");

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "api/film_colour.h"
 #include "api/output_file.h"
 #include "api/render_request.h"
 #include "api/sensor_readout.h"
@@ -93,6 +94,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
   const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film());
+  settings.filmResponse = filmResponse(args.camera);
   ImageMetadata identity = job.identity(*camera, settings);
   addSensorIdentity(identity, readout);
   // The running sums live on rank 0 alone: the other ranks get strips.

@@ -142,15 +142,15 @@ class PyScene {
   std::unique_ptr<PyRenderResult> render(const py::kwargs& given) const {
     // Every keyword, with the command line's defaults (`lensrt render --help`).
     static const std::vector<std::string> known = {
-        "camera",        "lens",          "fstop",       "focus",
-        "focus_pixel",   "sensor",        "res",         "spp",
-        "seed",          "aov",           "env",         "env_rotate",
-        "env_intensity", "max_depth",     "camera_node", "camera_to_world",
-        "threads",       "crop",          "blades",      "blade_rotation",
-        "aperture_mask", "focal_length",  "exposure",    "shutter",
-        "iso",           "dispersion",    "coatings",    "film",
-        "noise",         "sensor_params", "raw",         "cfa",
-        "progress"};
+        "camera",        "lens",         "fstop",         "focus",
+        "focus_pixel",   "sensor",       "res",           "spp",
+        "seed",          "aov",          "env",           "env_rotate",
+        "env_intensity", "max_depth",    "camera_node",   "camera_to_world",
+        "threads",       "crop",         "blades",        "blade_rotation",
+        "aperture_mask", "focal_length", "exposure",      "shutter",
+        "iso",           "dispersion",   "coatings",      "film",
+        "spectral",      "noise",        "sensor_params", "raw",
+        "cfa",           "progress"};
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
       if (std::find(known.begin(), known.end(), name) == known.end())
@@ -186,6 +186,8 @@ class PyScene {
       c.dispersion = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "dispersion");
     if (const py::object v = get("coatings"); !v.is_none()) c.coatings = toText(v, "coatings");
     if (const py::object v = get("film"); !v.is_none()) c.film = toText(v, "film");
+    if (const py::object v = get("spectral"); !v.is_none())
+      c.spectral = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "spectral");
     if (const py::object v = get("noise"); !v.is_none())
       c.noise = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "noise");
     if (const py::object v = get("sensor_params"); !v.is_none())
@@ -339,8 +341,8 @@ ValueError for a broken one. The GIL is released while it loads.)doc")
        env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
        exposure="normalized", shutter=None, iso=None, dispersion="on", coatings=None,
-       film=None, noise="off", sensor_params=None, raw=None, cfa="RGGB",
-       progress=None) -> RenderResult
+       film=None, spectral="on", noise="off", sensor_params=None, raw=None,
+       cfa="RGGB", progress=None) -> RenderResult
 
 Renders the scene as `lensrt render` does, with the same bits for the same
 settings and seed. Keywords only, each the flag of the same name:
@@ -368,6 +370,9 @@ settings and seed. Keywords only, each the flag of the same name:
   focal_length (mm), exposure ("normalized" or "physical"), shutter (seconds),
   iso, dispersion ("on"/"off" or bool), coatings ("none", "single", "multi"),
   film ("radiance" or "irradiance"): as the flags of `lensrt render --help`.
+  spectral: "on"/True (default) carries light at four wavelengths per sample
+    (colours upsampled to spectra, the CIE 1931 observer, sRGB); "off"/False
+    carries RGB.
   noise: "on"/True reads the exposure out through a sensor (shot, dark and read
     noise, PRNU/DSNU, full well, ISO gain, ADC); channels noiseless.R/G/B keep
     the render. sensor_params: a preset ("default", "full-frame", "smartphone",

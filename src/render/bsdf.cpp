@@ -13,15 +13,15 @@ namespace lensrt {
 // reciprocal, and the total albedo is exactly E + rho (1 - E) <= 1. glTF's own
 // mix with F(v.h) is not energy conserving at grazing angles (albedo up to ~1.3).
 
-Rgb dielectricF0(const BsdfParams& p) {
+Spectrum dielectricF0(const BsdfParams& p) {
   const float ior = std::max(1.0f, p.ior);
   const float r = (ior - 1) / (ior + 1);
   const float w = std::clamp(p.specularWeight, 0.0f, 1.0f);
-  const Rgb one{1, 1, 1};
+  const Spectrum one(1.0f);
   return min(p.specularColor * (r * r), one) * w;
 }
 
-Rgb Bsdf::dielectricSpecularAlbedo(float mu) const {
+Spectrum Bsdf::dielectricSpecularAlbedo(float mu) const {
   return ggx::specularAlbedo(alpha_, mu).with(f0_, p_.specularWeight);
 }
 
@@ -32,10 +32,10 @@ Bsdf::Bsdf(const BsdfParams& params, float muO)
   p_.metallic = std::clamp(p_.metallic, 0.0f, 1.0f);
   p_.opaqueWeight = std::clamp(p_.opaqueWeight, 0.0f, 1.0f);
   p_.specularWeight = std::clamp(p_.specularWeight, 0.0f, 1.0f);
-  const Rgb average = ggx::averageSpecularAlbedo(alpha_).with(f0_, p_.specularWeight);
-  for (int c = 0; c < 3; ++c) diffuseNorm_[c] = 1.0f / std::max(1e-4f, 1 - average[c]);
+  const Spectrum average = ggx::averageSpecularAlbedo(alpha_).with(f0_, p_.specularWeight);
+  for (std::size_t c = 0; c < Spectrum::kLanes; ++c) diffuseNorm_[c] = 1.0f / std::max(1e-4f, 1 - average[c]);
   if (muO_ == muO_) {  // not NaN
-    albedoO_ = p_.specularWeight > 0 ? dielectricSpecularAlbedo(muO_) : Rgb{0, 0, 0};
+    albedoO_ = p_.specularWeight > 0 ? dielectricSpecularAlbedo(muO_) : Spectrum(0.0f);
     lambdaO_ = ggx::lambda(alpha_, Vec3f{0, 0, muO_});
     specularProbabilityO_ = computeSpecularProbability(muO_);
   }
@@ -43,9 +43,9 @@ Bsdf::Bsdf(const BsdfParams& params, float muO)
 
 // Without a specular layer (KHR_materials_specular 0) f0 and f90 are 0 and
 // so is the albedo, whatever the table says.
-Rgb Bsdf::specularAlbedoAt(float mu) const {
+Spectrum Bsdf::specularAlbedoAt(float mu) const {
   if (mu == muO_) return albedoO_;
-  return p_.specularWeight > 0 ? dielectricSpecularAlbedo(mu) : Rgb{0, 0, 0};
+  return p_.specularWeight > 0 ? dielectricSpecularAlbedo(mu) : Spectrum(0.0f);
 }
 
 // Lambda depends on the cosine alone.
@@ -61,29 +61,29 @@ float Bsdf::smithLambda(const Vec3f& w) const {
   return ggx::lambda(alpha_, w);
 }
 
-Rgb Bsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
-  if (wo.z <= 0 || wi.z <= 0) return {0, 0, 0};
+Spectrum Bsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
+  if (wo.z <= 0 || wi.z <= 0) return Spectrum(0.0f);
   Vec3f h = wo + wi;
   const float hl = length(h);
-  if (hl == 0) return {0, 0, 0};
+  if (hl == 0) return Spectrum(0.0f);
   h = h / hl;
   return evalAt(wo, wi, h, ggxD(h));
 }
 
 // eval for the unit half vector h of wo and wi and d = D(h).
-Rgb Bsdf::evalAt(const Vec3f& wo, const Vec3f& wi, const Vec3f& h, float d) const {
+Spectrum Bsdf::evalAt(const Vec3f& wo, const Vec3f& wi, const Vec3f& h, float d) const {
   const float vDotH = std::max(0.0f, dot(wo, h));
   const float fw = ggx::schlickWeight(vDotH);
   // Height-correlated Smith G2 over the usual 4 cos cos denominator.
   const float g2 = 1.0f / (1.0f + lambdaAt(wo) + lambdaAt(wi));
   const float spec = d * g2 / (4 * wo.z * wi.z);
-  const Rgb one{1, 1, 1};
-  const Rgb fDielectric = f0_ + (one * p_.specularWeight - f0_) * fw;
-  const Rgb fMetal = p_.baseColor + (one - p_.baseColor) * fw;
-  Rgb diffuse = one;
+  const Spectrum one(1.0f);
+  const Spectrum fDielectric = f0_ + (one * p_.specularWeight - f0_) * fw;
+  const Spectrum fMetal = p_.baseColor + (one - p_.baseColor) * fw;
+  Spectrum diffuse = one;
   if (p_.specularWeight > 0)
     diffuse = (one - specularAlbedoAt(wo.z)) * (one - specularAlbedoAt(wi.z)) * diffuseNorm_;
-  const Rgb dielectric = p_.baseColor * diffuse * kInvPiF + fDielectric * spec;
+  const Spectrum dielectric = p_.baseColor * diffuse * kInvPiF + fDielectric * spec;
   return dielectric * ((1 - p_.metallic) * p_.opaqueWeight) + fMetal * (spec * p_.metallic);
 }
 
@@ -94,7 +94,7 @@ float Bsdf::specularProbability(const Vec3f& wo) const {
 float Bsdf::computeSpecularProbability(float mu) const {
   // Lobe weights from the Fresnel at normal-ish incidence estimated with wo.z.
   const float fw = ggx::schlickWeight(std::max(0.0f, mu));
-  const Rgb one{1, 1, 1};
+  const Spectrum one(1.0f);
   const float fd = luminance(f0_ + (one * p_.specularWeight - f0_) * fw);
   const float dielectric = (1 - p_.metallic) * p_.opaqueWeight;
   const float spec = dielectric * fd + p_.metallic * luminance(p_.baseColor + (one - p_.baseColor) * fw);
@@ -131,7 +131,7 @@ BsdfValue Bsdf::evalPdf(const Vec3f& wo, const Vec3f& wi) const {
   if (wo.z <= 0 || wi.z <= 0) return {};
   Vec3f h = wo + wi;
   const float hl = length(h);
-  if (hl == 0) return {{0, 0, 0}, mixturePdf(wo, wi, 0)};
+  if (hl == 0) return {Spectrum(0.0f), mixturePdf(wo, wi, 0)};
   h = h / hl;
   const float d = ggxD(h);
   return {evalAt(wo, wi, h, d), mixturePdf(wo, wi, specularPdfAt(wo, d))};

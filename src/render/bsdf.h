@@ -18,18 +18,19 @@
 
 #include "core/vec.h"
 #include "render/ggx.h"
+#include "render/spectrum.h"
 
 namespace lensrt {
 
 struct BsdfParams {
-  Rgb baseColor{1, 1, 1};
+  Spectrum baseColor{1.0f};
   float metallic = 1.0f;
   float roughness = 1.0f;  // perceptual; GGX alpha = roughness^2
   // KHR_materials_specular's strength of the dielectric specular layer: 1 is
   // plain glTF, 0 leaves a pure Lambertian dielectric (used by furnace tests).
   float specularWeight = 1.0f;
-  Rgb specularColor{1, 1, 1};  // KHR_materials_specular's f0 tint
-  float ior = 1.5f;            // KHR_materials_ior: f0 = ((ior - 1) / (ior + 1))^2
+  Spectrum specularColor{1.0f};  // KHR_materials_specular's f0 tint
+  float ior = 1.5f;              // KHR_materials_ior: f0 = ((ior - 1) / (ior + 1))^2
   // Share of the dielectric part that is this opaque BRDF: 1 - transmission
   // (KHR_materials_transmission's lobe is DielectricBsdf).
   float opaqueWeight = 1.0f;
@@ -38,19 +39,19 @@ struct BsdfParams {
 // The dielectric layer's Fresnel at normal and grazing incidence (glTF's
 // KHR_materials_specular): f0 = min(f0(ior) * specularColor, 1) * weight,
 // f90 = weight.
-Rgb dielectricF0(const BsdfParams& p);
+Spectrum dielectricF0(const BsdfParams& p);
 
 // A BSDF's value and sampling density for one pair of directions, computed
 // together: the same bits as eval and pdf called one after the other.
 struct BsdfValue {
-  Rgb f{0, 0, 0};  // BSDF value (no cosine)
-  float pdf = 0;   // solid angle, of the whole mixture
+  Spectrum f{0.0f};  // BSDF value (no cosine)
+  float pdf = 0;     // solid angle, of the whole mixture
 };
 
 struct BsdfSample {
   Vec3f wi;
-  Rgb f;      // BRDF value (no cosine)
-  float pdf;  // solid angle, of the whole mixture
+  Spectrum f;  // BRDF value (no cosine)
+  float pdf;   // solid angle, of the whole mixture
 };
 
 class Bsdf {
@@ -67,7 +68,7 @@ class Bsdf {
   // Any other wo still works; the values are the same bits either way.
   Bsdf(const BsdfParams& params, float muO);
 
-  Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
+  Spectrum eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
   // Both at once, sharing the half vector and D.
   BsdfValue evalPdf(const Vec3f& wo, const Vec3f& wi) const;
@@ -87,19 +88,19 @@ class Bsdf {
   float specularPdf(const Vec3f& wo, const Vec3f& wi) const;
   float specularPdfAt(const Vec3f& wo, float d) const;
   float mixturePdf(const Vec3f& wo, const Vec3f& wi, float specular) const;
-  Rgb evalAt(const Vec3f& wo, const Vec3f& wi, const Vec3f& h, float d) const;
-  Rgb dielectricSpecularAlbedo(float mu) const;
+  Spectrum evalAt(const Vec3f& wo, const Vec3f& wi, const Vec3f& h, float d) const;
+  Spectrum dielectricSpecularAlbedo(float mu) const;
   // The wo-only quantities, from the prepared values when mu is muO.
-  Rgb specularAlbedoAt(float mu) const;
+  Spectrum specularAlbedoAt(float mu) const;
   float lambdaAt(const Vec3f& w) const;
   float computeSpecularProbability(float mu) const;
   BsdfParams p_;
   float alpha_;
-  Rgb f0_;
-  Rgb diffuseNorm_{1, 1, 1};  // 1 / (1 - average specular albedo), per channel
+  Spectrum f0_;
+  Spectrum diffuseNorm_{1.0f};  // 1 / (1 - average specular albedo), per channel
   // Prepared for wo.z == muO_ (NaN: nothing prepared, never equal).
   float muO_;
-  Rgb albedoO_{0, 0, 0};
+  Spectrum albedoO_{0.0f};
   float lambdaO_ = 0;
   float specularProbabilityO_ = 0;
 };

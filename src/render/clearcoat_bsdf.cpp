@@ -11,12 +11,12 @@ constexpr float kF0 = 0.04f;  // ior 1.5
 
 ClearcoatBsdf::ClearcoatBsdf(float roughness) : alpha_(ggx::alphaFromRoughness(roughness)) {}
 
-Rgb ClearcoatBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
-  if (wo.z <= 0 || wi.z <= 0) return {0, 0, 0};
+Spectrum ClearcoatBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
+  if (wo.z <= 0 || wi.z <= 0) return Spectrum(0.0f);
   const Vec3f h = normalize(wo + wi);
   const float f = kF0 + (1 - kF0) * ggx::schlickWeight(dot(wo, h));
   const float v = f * ggx::D(alpha_, h) * ggx::G2(alpha_, wo, wi) / (4 * wo.z * wi.z);
-  return {v, v, v};
+  return Spectrum(v);
 }
 
 float ClearcoatBsdf::pdf(const Vec3f& wo, const Vec3f& wi) const {

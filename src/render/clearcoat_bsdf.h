@@ -8,6 +8,7 @@
 
 #include "core/vec.h"
 #include "render/bsdf.h"
+#include "render/spectrum.h"
 
 namespace lensrt {
 
@@ -15,7 +16,7 @@ class ClearcoatBsdf {
  public:
   explicit ClearcoatBsdf(float roughness);
 
-  Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
+  Spectrum eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
   std::optional<BsdfSample> sample(const Vec3f& wo, const Vec2f& u) const;
   float albedo(float mu) const;  // directional albedo at cos theta = mu

@@ -51,15 +51,15 @@ float DielectricBsdf::reflectance(const Vec3f& wo) const {
   return reflectWeight(wo.z);
 }
 
-Rgb DielectricBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
-  if (wo.z <= 0 || wi.z == 0) return {0, 0, 0};
-  const Rgb one{1, 1, 1};
+Spectrum DielectricBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
+  if (wo.z <= 0 || wi.z == 0) return Spectrum(0.0f);
+  const Spectrum one(1.0f);
   if (wi.z > 0 || p_.thin) {
     // Reflection, or thin-walled transmission as the mirror image of it.
     const Vec3f wr{wi.x, wi.y, std::abs(wi.z)};
     Vec3f h = wo + wr;
     const float hl = length(h);
-    if (hl == 0) return {0, 0, 0};
+    if (hl == 0) return Spectrum(0.0f);
     h = h / hl;
     const float f = reflectWeight(dot(wo, h));
     const float micro = ggx::D(alpha_, h) * ggx::G2(alpha_, wo, wr) / (4 * wo.z * wr.z);
@@ -70,11 +70,11 @@ Rgb DielectricBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
   const float eta = p_.eta;
   Vec3f h = wo + wi * eta;
   const float hl = length(h);
-  if (hl == 0) return {0, 0, 0};
+  if (hl == 0) return Spectrum(0.0f);
   h = h / hl;
   if (h.z < 0) h = -h;
   const float cosO = dot(wo, h), cosI = dot(wi, h);
-  if (cosO <= 0 || cosI >= 0) return {0, 0, 0};  // a microfacet facing away from one side
+  if (cosO <= 0 || cosI >= 0) return Spectrum(0.0f);  // a microfacet facing away from one side
   const float f = reflectWeight(cosO);
   const float denom = cosI + cosO / eta;
   const float value = ggx::D(alpha_, h) * ggx::G2(alpha_, wo, -wi) * std::abs(cosI * cosO) /

@@ -14,6 +14,7 @@
 
 #include "core/vec.h"
 #include "render/bsdf.h"
+#include "render/spectrum.h"
 
 namespace lensrt {
 
@@ -25,10 +26,10 @@ struct DielectricParams {
   // Index of the far side over the near side (wo's): ior entering the
   // material, 1 / ior leaving it. Thin-walled surfaces use ior both ways.
   float eta = 1.5f;
-  float roughness = 0.0f;       // perceptual, as the glTF material's
-  Rgb tint{1, 1, 1};            // transmission colour (glTF: the base colour)
-  float specularWeight = 1.0f;  // KHR_materials_specular: scales F
-  Rgb specularColor{1, 1, 1};   // KHR_materials_specular: tints the reflection
+  float roughness = 0.0f;        // perceptual, as the glTF material's
+  Spectrum tint{1.0f};           // transmission colour (glTF: the base colour)
+  float specularWeight = 1.0f;   // KHR_materials_specular: scales F
+  Spectrum specularColor{1.0f};  // KHR_materials_specular: tints the reflection
   bool thin = false;
 };
 
@@ -36,7 +37,7 @@ class DielectricBsdf {
  public:
   explicit DielectricBsdf(const DielectricParams& p);
 
-  Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
+  Spectrum eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
   // uLobe chooses reflection or transmission (by the Fresnel term at the
   // sampled microfacet), u the microfacet.

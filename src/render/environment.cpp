@@ -14,6 +14,7 @@ Environment Environment::constant(const Rgb& radiance) {
   e.constant_ = radiance;
   e.black_ = !(maxComponent(radiance) > 0);
   e.averageLuminance_ = luminance(radiance);
+  e.averageRadiance_ = radiance;
   e.description_ = "constant " + std::to_string(radiance.x) + "," + std::to_string(radiance.y) + "," +
                    std::to_string(radiance.z);
   return e;
@@ -31,6 +32,7 @@ Environment Environment::latLong(const Image& image) {
   e.texels_.resize(std::size_t(e.width_) * e.height_);
   std::vector<float> weights(e.texels_.size());
   double sumLum = 0, sumSin = 0;
+  Vec3d sumRgb{0, 0, 0};
   for (int y = 0; y < e.height_; ++y) {
     const float sinTheta = std::sin(kPiF * (float(y) + 0.5f) / float(e.height_));
     for (int x = 0; x < e.width_; ++x) {
@@ -47,12 +49,14 @@ Environment Environment::latLong(const Image& image) {
       weights[i] = luminance(c) * sinTheta;
       // Rows near the poles cover less solid angle.
       sumLum += double(luminance(c)) * sinTheta;
+      sumRgb += Vec3d(c) * double(sinTheta);
       sumSin += sinTheta;
     }
   }
   e.distribution_ = Distribution2D(weights, e.width_, e.height_);
   e.black_ = e.distribution_.empty();
   e.averageLuminance_ = sumSin > 0 ? float(sumLum / sumSin) : 0.0f;
+  e.averageRadiance_ = sumSin > 0 ? Rgb(sumRgb / sumSin) : Rgb{0, 0, 0};
   e.description_ = "latlong " + std::to_string(e.width_) + "x" + std::to_string(e.height_);
   return e;
 }
@@ -64,6 +68,7 @@ Environment Environment::scaled(float k) const {
   e.constant_ = constant_ * k;
   for (Rgb& t : e.texels_) t = t * k;
   e.averageLuminance_ = averageLuminance_ * k;
+  e.averageRadiance_ = averageRadiance_ * k;
   // The sampling density is normalised, so it does not change with k.
   if (!(k > 0)) {
     e.black_ = true;

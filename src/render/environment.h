@@ -49,6 +49,8 @@ class Environment {
   float pdf(const Vec3f& direction) const;
   // Mean radiance luminance over the sphere: for light selection by power.
   float averageLuminance() const { return averageLuminance_; }
+  // Mean radiance over the sphere, per channel (its colour: auto white balance).
+  Rgb averageRadiance() const { return averageRadiance_; }
   std::string describe() const { return description_; }
 
   static Vec2f directionToUv(const Vec3f& d);
@@ -65,6 +67,7 @@ class Environment {
   std::vector<Rgb> texels_;
   Distribution2D distribution_;
   float averageLuminance_ = 0;
+  Rgb averageRadiance_{0, 0, 0};
   float cosRotation_ = 1, sinRotation_ = 0;
   std::string description_ = "black";
 };

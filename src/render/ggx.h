@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/vec.h"
+#include "render/spectrum.h"
 
 namespace lensrt::ggx {
 
@@ -41,7 +42,9 @@ Vec3f cosineHemisphere(const Vec2f& u);
 struct AlbedoTerms {
   float one = 0, schlick = 0;
   float with(float f0, float f90) const { return f0 * one + (f90 - f0) * schlick; }
-  Rgb with(const Rgb& f0, float f90) const { return {with(f0.x, f90), with(f0.y, f90), with(f0.z, f90)}; }
+  Spectrum with(const Spectrum& f0, float f90) const {
+    return {with(f0[0], f90), with(f0[1], f90), with(f0[2], f90), with(f0[3], f90)};
+  }
 };
 AlbedoTerms specularAlbedo(float alpha, float mu);
 AlbedoTerms averageSpecularAlbedo(float alpha);

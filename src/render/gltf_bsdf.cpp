@@ -67,7 +67,7 @@ GltfBsdf::Choice GltfBsdf::computeChoice(const Vec3f& woLocal, const Vec3f& woCo
 }
 
 // eval and pdf are the two halves of evalPdf (the renderer wants both at once).
-Rgb GltfBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
+Spectrum GltfBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
   return evalPdf(wo, wi).f;
 }
 
@@ -80,7 +80,7 @@ BsdfValue GltfBsdf::evalPdf(const Vec3f& wo, const Vec3f& wi) const {
   const Vec3f woL = local(wo), wiL = shading_.toLocal(wi);
   const BsdfValue b = base_.evalPdf(woL, wiL);
   // The layers' values and the lobes' densities weighted by their choice.
-  Rgb f = b.f;
+  Spectrum f = b.f;
   float p = 0;
   if (c.base > 0) p += c.base * b.pdf;
   if (transmission_ > 0) f += dielectric_->eval(woL, wiL) * transmission_;

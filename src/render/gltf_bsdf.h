@@ -20,6 +20,7 @@
 #include "render/clearcoat_bsdf.h"
 #include "render/dielectric_bsdf.h"
 #include "render/sheen_bsdf.h"
+#include "render/spectrum.h"
 
 namespace lensrt {
 
@@ -29,10 +30,10 @@ struct GltfBsdfParams {
   DielectricParams dielectric;
   float clearcoat = 0;
   float clearcoatRoughness = 0;
-  Rgb sheenColor{0, 0, 0};
+  Spectrum sheenColor{0.0f};
   float sheenRoughness = 0;
 
-  const Rgb& baseColor() const { return base.baseColor; }
+  const Spectrum& baseColor() const { return base.baseColor; }
 };
 
 class GltfBsdf {
@@ -46,7 +47,7 @@ class GltfBsdf {
   // as wo too; the values are the same bits either way.
   GltfBsdf(const GltfBsdfParams& params, const Frame& shading, const Frame& coat, const Vec3f& wo);
 
-  Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
+  Spectrum eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
   // Both at once (what eval and pdf give): the next-event estimate needs
   // both, and the base lobe shares its half vector between them.

@@ -30,6 +30,21 @@ float aimAt(Ray& ray, const Vec3f& target) {
   return len;
 }
 
+// KHR_materials_volume's absorption coefficient at the sample's wavelengths:
+// sigma = -ln(c) / d of the attenuation colour c, upsampled as a reflectance.
+Spectrum attenuationCoefficient(const Material& m, const SampledWavelengths& lambda) {
+  if (!lambda.spectral()) return Spectrum(m.attenuationCoefficient());
+  if (!(m.attenuationDistance > 0) || !std::isfinite(m.attenuationDistance)) return Spectrum(0.0f);
+  Spectrum sigma = lambda.reflectance(m.attenuationColor);
+  for (float& c : sigma.v) c = -std::log(std::clamp(c, 1e-6f, 1.0f)) / m.attenuationDistance;
+  return sigma;
+}
+
+// A volume whose index depends on the wavelength (KHR_materials_dispersion).
+bool dispersive(const Material& m) {
+  return m.dispersion > 0 && m.transmission > 0 && !m.thinWalled();
+}
+
 }  // namespace
 
 float powerHeuristic(float pdfA, float pdfB) {
@@ -45,29 +60,30 @@ Integrator::Integrator(const RenderScene& scene, const MaterialTable& materials,
     thinGlass_ = thinGlass_ || (m.transmission > 0 && m.thinWalled());
 }
 
-Rgb Integrator::thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite) const {
-  Rgb t{1, 1, 1};
+Spectrum Integrator::thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite,
+                                            const SampledWavelengths& lambda) const {
+  Spectrum t{1.0f};
   for (int crossings = 0; crossings < 16; ++crossings) {
     const std::optional<SurfaceHit> hit = scene_.intersect(ray);
     if (!hit) return t;
     const Material& m = materials_.material(hit->material);
-    if (!(m.transmission > 0) || !m.thinWalled()) return {0, 0, 0};
+    if (!(m.transmission > 0) || !m.thinWalled()) return Spectrum(0.0f);
     // What the sheet lets through straight: the transmitting share of the
     // dielectric, less its Fresnel reflection, tinted by the base colour.
-    const ShadingPoint sp = evaluateMaterial(materials_, *hit, -ray.direction);
+    const ShadingPoint sp = evaluateMaterial(materials_, *hit, -ray.direction, lambda);
     // Only smooth sheets: through a rough one the light is scattered, and
     // paths that scatter at the sheet and aim at the light from there (next-
     // event estimation at the sheet) already carry it.
-    if (ggx::alphaFromRoughness(sp.bsdf.base.roughness) > ggx::kMinAlpha) return {0, 0, 0};
+    if (ggx::alphaFromRoughness(sp.bsdf.base.roughness) > ggx::kMinAlpha) return Spectrum(0.0f);
     const float cosine = std::abs(dot(ray.direction, sp.geometricNormal));
     const float reflected = sp.bsdf.base.specularWeight * fresnelDielectric(cosine, std::max(1.0f, m.ior));
     t *= sp.bsdf.baseColor() * ((1 - sp.bsdf.base.metallic) * sp.bsdf.transmission * (1 - reflected));
-    if (!(maxComponent(t) > 0)) return {0, 0, 0};
+    if (!(maxComponent(t) > 0)) return Spectrum(0.0f);
     // On past the sheet, toward the same light point.
     ray.origin = offsetOrigin(hit->position, -sp.geometricNormal);
     if (finite && !(aimAt(ray, target) > offsetScale(target))) return t;  // past the light
   }
-  return {0, 0, 0};
+  return Spectrum(0.0f);
 }
 
 std::uint32_t Integrator::sampleDimensions() const {
@@ -79,19 +95,19 @@ std::uint32_t Integrator::sampleDimensions() const {
   return std::uint32_t(std::min<std::int64_t>(last + SampleBlock::kDims, std::int64_t{1} << 30));
 }
 
-PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const {
+PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, SampledWavelengths lambda) const {
   PathSample out;
-  Rgb beta{1, 1, 1};
+  Spectrum radiance{0.0f};
+  Rgb film{0, 0, 0};  // what the path gathered before it dropped wavelengths
+  Spectrum beta = lambda.liveLanes();
   Ray ray = cameraRay;
   float prevBsdfPdf = 0;
   Vec3f prevPosition;
   // Absorption coefficient of the medium the path is in (KHR_materials_volume):
   // set when it refracts into a volume through a front face, cleared when it
   // leaves through a back face. Camera paths start in air.
-  Rgb sigma{0, 0, 0};
-  const auto absorbed = [&](float distance) {
-    return Rgb{std::exp(-sigma.x * distance), std::exp(-sigma.y * distance), std::exp(-sigma.z * distance)};
-  };
+  Spectrum sigma{0.0f};
+  const auto absorbed = [&](float distance) { return exp(sigma * -distance); };
 
   for (int depth = 0;; ++depth) {
     if (settings_.observer) settings_.observer->traced(depth == 0 ? RayKind::Camera : RayKind::Bounce, ray);
@@ -101,25 +117,34 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
       if (maxComponent(le) > 0) {
         const float w =
             depth == 0 ? 1.0f : powerHeuristic(prevBsdfPdf, lights_.pdfEnvironment(ray.direction));
-        out.radiance += beta * le * w;
+        radiance += beta * lambda.illuminant(le) * w;
       }
       break;
     }
     if (maxComponent(sigma) > 0) beta *= absorbed(hit->t);
     const Vec3f wo = -ray.direction;
-    const ShadingPoint sp = evaluateMaterial(materials_, *hit, wo);
+    if (lambda.spectral() && !lambda.secondaryTerminated() &&
+        dispersive(materials_.material(hit->material))) {
+      // Refraction at this surface depends on the wavelength: the path goes on
+      // at the hero alone. What it has gathered so far keeps its four.
+      film += lambda.toFilm(radiance);
+      radiance = Spectrum(0.0f);
+      lambda.terminateSecondary();
+      beta *= lambda.liveLanes();
+    }
+    const ShadingPoint sp = evaluateMaterial(materials_, *hit, wo, lambda);
     if (depth == 0) {
       out.hit = true;
       out.distance = hit->t;
       out.normal = sp.frame.n;
-      out.albedo = sp.bsdf.baseColor();
+      out.albedo = sp.albedo;
     }
     if (maxComponent(sp.emission) > 0) {
       float w = 1.0f;
       if (depth > 0)
         w = powerHeuristic(prevBsdfPdf, lights_.pdfTriangle(hit->instance, hit->primitive, prevPosition,
                                                             hit->position, hit->geometricNormal));
-      out.radiance += beta * sp.emission * w;
+      radiance += beta * sp.emission * w;
     }
     if (depth >= settings_.maxDepth) break;
 
@@ -140,7 +165,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
       const std::optional<LightSample> ls = lights_.sample(hit->position, u.get1D(0), u.get2D(1));
       if (ls && (dot(ls->wi, ng) > 0 || bsdf.transmits()) && consistent(ls->wi)) {
         const BsdfValue bv = bsdf.evalPdf(wo, ls->wi);
-        const Rgb f = bv.f * std::abs(dot(ls->wi, sp.frame.n));
+        const Spectrum f = bv.f * std::abs(dot(ls->wi, sp.frame.n));
         if (maxComponent(f) > 0) {
           Ray shadow{originToward(ls->wi), ls->wi, 0.0f, kInfinityF};
           // A light at a point: aim from the offset origin at that point itself.
@@ -151,16 +176,16 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
           if (settings_.observer) settings_.observer->traced(RayKind::Shadow, shadow);
           // Punctual lights shine through thin-walled glass (see
           // thinGlassTransmittance); every other shadow ray stops at anything.
-          const Rgb visible = ls->delta && thinGlass_
-                                  ? thinGlassTransmittance(shadow, target, finite)
-                                  : Rgb{1, 1, 1} * (scene_.occluded(shadow) ? 0.0f : 1.0f);
+          const Spectrum visible = ls->delta && thinGlass_
+                                       ? thinGlassTransmittance(shadow, target, finite, lambda)
+                                       : Spectrum(scene_.occluded(shadow) ? 0.0f : 1.0f);
           if (maxComponent(visible) > 0) {
             const float w = ls->delta ? 1.0f : powerHeuristic(ls->pdf, bv.pdf);
-            Rgb contribution = beta * f * ls->radiance * visible * (w / ls->pdf);
+            Spectrum contribution = beta * f * lambda.illuminant(ls->radiance) * visible * (w / ls->pdf);
             // Inside a medium the light's segment is absorbed too (a light
             // inside a volume; lights outside are behind its surface).
             if (maxComponent(sigma) > 0 && finite) contribution *= absorbed(ls->distance);
-            out.radiance += contribution;
+            radiance += contribution;
           }
         }
       }
@@ -178,7 +203,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
     ray = Ray{originToward(wi), wi, 0.0f, kInfinityF};
     if (transmitted) {
       const Material& m = materials_.material(hit->material);
-      if (!m.thinWalled()) sigma = sp.frontFace ? m.attenuationCoefficient() : Rgb{0, 0, 0};
+      if (!m.thinWalled()) sigma = sp.frontFace ? attenuationCoefficient(m, lambda) : Spectrum(0.0f);
     }
 
     if (depth + 1 >= settings_.rouletteDepth) {
@@ -190,6 +215,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler) const
       }
     }
   }
+  out.radiance = film + lambda.toFilm(radiance);
   return out;
 }
 

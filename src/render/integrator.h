@@ -10,6 +10,7 @@
 #include "render/material_eval.h"
 #include "render/ray_observer.h"
 #include "render/sampler.h"
+#include "render/wavelengths.h"
 #include "scene/render_scene.h"
 
 namespace lensrt {
@@ -26,7 +27,7 @@ struct IntegratorSettings {
 
 // One camera path's result: radiance and what the first hit says (for AOVs).
 struct PathSample {
-  Rgb radiance{0, 0, 0};
+  Rgb radiance{0, 0, 0};  // in the film's RGB
   bool hit = false;
   float distance = 0;     // along the unit camera ray, metres
   Vec3f normal{0, 0, 0};  // world shading normal at the first hit, facing the camera
@@ -38,8 +39,10 @@ class Integrator {
   Integrator(const RenderScene& scene, const MaterialTable& materials, const LightSet& lights,
              const Environment& environment, const IntegratorSettings& settings);
 
-  // `ray` must have a unit direction.
-  PathSample trace(const Ray& ray, const Sampler& sampler) const;
+  // `ray` must have a unit direction; `lambda` says how the path carries
+  // colour (RGB, or the sample's wavelengths).
+  PathSample trace(const Ray& ray, const Sampler& sampler,
+                   SampledWavelengths lambda = SampledWavelengths::rgb()) const;
   // The sampler dimensions a camera path can use, camera's included (the
   // blocks it asks for; see PixelSeeds).
   std::uint32_t sampleDimensions() const;
@@ -56,7 +59,8 @@ class Integrator {
   // lights and the sky keep opaque shadow rays and reach through glass by
   // BSDF sampling.
   // `target` is the light point (finite) for re-aiming past each sheet.
-  Rgb thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite) const;
+  Spectrum thinGlassTransmittance(Ray ray, const Vec3f& target, bool finite,
+                                  const SampledWavelengths& lambda) const;
 
   const RenderScene& scene_;
   const MaterialTable& materials_;

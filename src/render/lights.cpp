@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "core/constants.h"
 #include "scene/surface_alpha.h"
@@ -88,6 +90,26 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
     power.push_back(kPiF * kPiF * radius * radius * environment.averageLuminance());
   }
   pick_ = Distribution1D(power);
+
+  // The dominant light's colour: each punctual light, each emissive
+  // material's triangles together, the environment, by the power above.
+  std::vector<std::pair<double, Rgb>> sources;
+  for (std::size_t i = 0; i < scene.lights.size(); ++i)
+    sources.emplace_back(power[i], scene.lights[i].intensity);
+  std::map<int, std::pair<double, Rgb>> byMaterial;
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    auto& [sum, colour] = byMaterial[triangles_[t].material];
+    sum += power[firstTriangle_ + t];
+    colour = materials.material(triangles_[t].material).emissive;
+  }
+  for (const auto& [material, source] : byMaterial) sources.push_back(source);
+  if (!environment.isBlack()) sources.emplace_back(power.back(), environment.averageRadiance());
+  double best = 0;
+  for (const auto& [p, colour] : sources)
+    if (p > best && maxComponent(colour) > 0) {
+      best = p;
+      dominantColour_ = colour;
+    }
 }
 
 std::optional<LightSample> LightSet::samplePunctual(const PunctualLight& l, const Vec3f& p) const {

@@ -29,6 +29,10 @@ class LightSet {
   LightSet(const MaterialTable& materials, const Environment& environment, const Bounds3f& sceneBounds);
 
   bool empty() const { return pick_.empty(); }
+  // The colour of the light with the most power (a punctual light, an
+  // emissive material's triangles together, or the environment), for an
+  // automatic white balance; none when the scene has no light.
+  std::optional<Rgb> dominantColour() const { return dominantColour_; }
   std::size_t emissiveTriangleCount() const { return triangles_.size(); }
 
   std::optional<LightSample> sample(const Vec3f& p, float uPick, const Vec2f& u) const;
@@ -58,6 +62,7 @@ class LightSet {
   std::vector<std::int64_t> instanceFirstTriangle_;  // -1: instance not emissive
   // Pick order: punctual lights, then triangles, then the environment.
   Distribution1D pick_;
+  std::optional<Rgb> dominantColour_;
   std::size_t firstTriangle_ = 0, environmentIndex_ = 0;
 };
 

@@ -127,7 +127,8 @@ Rgb rgb(const Vec4f& v) {
 
 }  // namespace
 
-ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo) {
+ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo,
+                              const SampledWavelengths& lambda) {
   const SceneDesc& scene = materials.scene();
   const Material& m = materials.material(hit.material);
   ShadingPoint sp;
@@ -142,21 +143,24 @@ ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& 
   // glTF: base colour = factor * texture * COLOR_0 (alpha is the scene's alpha filter's job).
   BsdfParams& base = sp.bsdf.base;
   const Vec4f bc = lookup(scene, m.baseColorTexture, hit);
-  base.baseColor = Rgb{m.baseColor.x * bc.x * hit.color.x, m.baseColor.y * bc.y * hit.color.y,
-                       m.baseColor.z * bc.z * hit.color.z};
+  sp.albedo = Rgb{m.baseColor.x * bc.x * hit.color.x, m.baseColor.y * bc.y * hit.color.y,
+                  m.baseColor.z * bc.z * hit.color.z};
+  base.baseColor = lambda.reflectance(sp.albedo);
   const Vec4f mr = lookup(scene, m.metallicRoughnessTexture, hit);
   base.roughness = std::clamp(m.roughness * mr.y, 0.0f, 1.0f);
   base.metallic = std::clamp(m.metallic * mr.z, 0.0f, 1.0f);
   base.ior = m.ior;
   base.specularWeight = std::clamp(m.specular * lookup(scene, m.specularTexture, hit).w, 0.0f, 1.0f) *
                         materials.extra(hit.material).specularWeight;
-  base.specularColor = m.specularColor * rgb(lookup(scene, m.specularColorTexture, hit));
+  base.specularColor = lambda.unbounded(m.specularColor * rgb(lookup(scene, m.specularColorTexture, hit)));
 
   if (m.transmission > 0) {
     GltfBsdfParams& b = sp.bsdf;
     b.transmission = std::clamp(m.transmission * lookup(scene, m.transmissionTexture, hit).x, 0.0f, 1.0f);
     b.dielectric.thin = m.thinWalled();
-    const float ior = std::max(1.0f, m.ior);
+    // KHR_materials_dispersion: the index at the hero wavelength (the
+    // integrator has dropped the other wavelengths at this hit).
+    const float ior = std::max(1.0f, lambda.spectral() ? m.iorAt(lambda.hero()) : m.ior);
     b.dielectric.eta = b.dielectric.thin || !back ? ior : 1 / ior;
     b.dielectric.roughness = base.roughness;
     b.dielectric.tint = base.baseColor;
@@ -176,11 +180,14 @@ ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& 
   }
   if (maxComponent(m.sheenColor) > 0) {
     // glTF's sheen colour is a reflectance in [0, 1] (unlike specularColorFactor).
-    sp.bsdf.sheenColor = min(m.sheenColor * rgb(lookup(scene, m.sheenColorTexture, hit)), Rgb{1, 1, 1});
+    sp.bsdf.sheenColor =
+        lambda.reflectance(min(m.sheenColor * rgb(lookup(scene, m.sheenColorTexture, hit)), Rgb{1, 1, 1}));
     sp.bsdf.sheenRoughness =
         std::clamp(m.sheenRoughness * lookup(scene, m.sheenRoughnessTexture, hit).w, 0.0f, 1.0f);
   }
-  sp.emission = emittedRadiance(materials, hit.material, hit.uv, hit.uv1, dot(wo, hit.geometricNormal));
+  const Rgb emission =
+      emittedRadiance(materials, hit.material, hit.uv, hit.uv1, dot(wo, hit.geometricNormal));
+  if (maxComponent(emission) > 0) sp.emission = lambda.illuminant(emission);
   return sp;
 }
 

@@ -7,6 +7,7 @@
 #include "core/frame.h"
 #include "core/vec.h"
 #include "render/gltf_bsdf.h"
+#include "render/wavelengths.h"
 #include "scene/render_scene.h"
 #include "scene/scene_desc.h"
 
@@ -35,16 +36,19 @@ class MaterialTable {
 };
 
 struct ShadingPoint {
-  Frame frame;            // z = (normal-mapped) shading normal, facing the viewer
-  Frame coatFrame;        // z = the clearcoat's normal, facing the viewer
-  Vec3f geometricNormal;  // unit, facing the viewer
-  bool frontFace = true;  // the viewer is on the side the triangle's winding faces
-  GltfBsdfParams bsdf;
-  Rgb emission{0, 0, 0};  // radiance leaving toward the viewer
+  Frame frame;              // z = (normal-mapped) shading normal, facing the viewer
+  Frame coatFrame;          // z = the clearcoat's normal, facing the viewer
+  Vec3f geometricNormal;    // unit, facing the viewer
+  bool frontFace = true;    // the viewer is on the side the triangle's winding faces
+  GltfBsdfParams bsdf;      // colours at the sample's wavelengths
+  Rgb albedo{0, 0, 0};      // the base colour in RGB (the albedo AOV)
+  Spectrum emission{0.0f};  // radiance leaving toward the viewer
 };
 
-// wo: unit world direction toward the viewer.
-ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo);
+// wo: unit world direction toward the viewer. The colours are turned into
+// `lambda`'s spectra (RGB transport keeps them).
+ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo,
+                              const SampledWavelengths& lambda = SampledWavelengths::rgb());
 
 // Emitted radiance of a material at a point with UV sets uv0 and uv1 leaving a
 // surface whose winding normal makes cosine `cosFront` with the direction of

@@ -31,7 +31,10 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   const int tilesX = (region.width() + tile - 1) / tile, tilesY = (region.height() + tile - 1) / tile;
   const std::uint32_t spp = lastSample - firstSample;
   std::atomic<std::uint64_t> blocked{0};
-  const bool spectral = camera.tracesWavelengths();
+  // Spectral transport when the settings have a film response; a camera
+  // that traces wavelengths (dispersion) follows each sample's hero.
+  const FilmResponse* response = settings.filmResponse.get();
+  const bool dispersive = camera.tracesWavelengths();
 
   const auto renderTile = [&](int t) {
     const int x0 = region.x0 + (t % tilesX) * tile, y0 = region.y0 + (t / tilesX) * tile;
@@ -44,7 +47,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
     const std::size_t batch = std::size_t(std::min<std::uint64_t>(kCameraBatch, rowSamples));
     std::vector<CameraSample> samples(batch);
     std::vector<std::optional<CameraRay>> rays(batch);
-    std::vector<Rgb> spectralWeights(spectral ? batch : 0);
+    std::vector<SampledWavelengths> lambdas(batch, SampledWavelengths::rgb());
+    std::vector<Rgb> dispersionWeights(dispersive && !response ? batch : 0);
     std::vector<Sampler> samplers;
     samplers.reserve(batch);
     // The seeds of the pixels a batch covers, shared by their samples (the
@@ -75,10 +79,17 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           // the sample index: a pixel's wavelengths are stratified (any
           // power-of-two prefix, so passes and resumes keep it). Cameras
           // that ignore the wavelength keep the default.
-          if (spectral) {
+          if (response) {
+            lambdas[k] = SampledWavelengths::sample(u.get1D(kDimWavelength), *response);
+            if (dispersive) {
+              cs.wavelengthNm = lambdas[k].hero();
+              lambdas[k].terminateSecondary();
+            }
+          } else if (dispersive) {
+            // RGB transport: one wavelength per sample, weighted into RGB.
             const WavelengthSample ws = sampleWavelength(u.get1D(kDimWavelength));
             cs.wavelengthNm = ws.wavelengthNm;
-            spectralWeights[k] = ws.weight;
+            dispersionWeights[k] = ws.weight;
           }
         }
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
@@ -90,8 +101,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             acc.addBlocked();
             ++tileBlocked;
           } else {
-            PathSample path = integrator.trace(cr->ray, samplers[k]);
-            if (spectral) path.radiance = path.radiance * spectralWeights[k];
+            PathSample path = integrator.trace(cr->ray, samplers[k], lambdas[k]);
+            if (!dispersionWeights.empty()) path.radiance = path.radiance * dispersionWeights[k];
             acc.add(path, cr->weight);
           }
         }

@@ -9,11 +9,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "camera/camera.h"
 #include "image/image.h"
 #include "render/film.h"
+#include "render/film_response.h"
 #include "render/film_state.h"
 #include "render/integrator.h"
 #include "render/pixel_region.h"
@@ -29,6 +31,8 @@ struct RenderSettings {
   int tileSize = 16;
   AovSelection aovs;
   std::optional<PixelRegion> region;  // none: the whole frame
+  // Spectral transport through this response; none: RGB transport.
+  std::shared_ptr<const FilmResponse> filmResponse;
 };
 
 struct RenderOutput {

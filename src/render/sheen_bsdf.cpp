@@ -78,8 +78,8 @@ class SheenAlbedoTable {
 
 }  // namespace
 
-SheenBsdf::SheenBsdf(const Rgb& color, float roughness)
-    : color_(max(color, Rgb{0, 0, 0})),
+SheenBsdf::SheenBsdf(const Spectrum& color, float roughness)
+    : color_(max(color, Spectrum(0.0f))),
       roughness_(std::clamp(roughness, kMinRoughness, 1.0f)),
       r_(roughness_ * roughness_) {}
 
@@ -87,8 +87,8 @@ float SheenBsdf::distribution(const Vec3f& h) const {
   return charlieD(r_, h);
 }
 
-Rgb SheenBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
-  if (wo.z <= 0 || wi.z <= 0) return {0, 0, 0};
+Spectrum SheenBsdf::eval(const Vec3f& wo, const Vec3f& wi) const {
+  if (wo.z <= 0 || wi.z <= 0) return Spectrum(0.0f);
   const Vec3f h = normalize(wo + wi);
   return color_ * (charlieD(r_, h) * visibility(wo.z, wi.z));
 }

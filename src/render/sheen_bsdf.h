@@ -11,6 +11,7 @@
 
 #include "core/vec.h"
 #include "render/bsdf.h"
+#include "render/spectrum.h"
 
 namespace lensrt {
 
@@ -20,9 +21,9 @@ class SheenBsdf {
   // albedo table cannot follow.
   static constexpr float kMinRoughness = 0.1f;  // r = 0.01
 
-  SheenBsdf(const Rgb& color, float roughness);
+  SheenBsdf(const Spectrum& color, float roughness);
 
-  Rgb eval(const Vec3f& wo, const Vec3f& wi) const;
+  Spectrum eval(const Vec3f& wo, const Vec3f& wi) const;
   float pdf(const Vec3f& wo, const Vec3f& wi) const;
   std::optional<BsdfSample> sample(const Vec3f& wo, const Vec2f& u) const;
   // Directional albedo of the lobe with a white sheen colour at cos theta = mu.
@@ -31,7 +32,7 @@ class SheenBsdf {
   float distribution(const Vec3f& h) const;  // D(h), for tests
 
  private:
-  Rgb color_;
+  Spectrum color_;
   float roughness_;  // clamped to [kMinRoughness, 1]
   float r_;
 };

@@ -34,7 +34,8 @@ inline bool isSupportedExtension(std::string_view name) {
          name == "KHR_texture_transform" || name == "KHR_xmp" || name == "KHR_xmp_json_ld" ||
          name == "KHR_materials_ior" || name == "KHR_materials_specular" ||
          name == "KHR_materials_transmission" || name == "KHR_materials_volume" ||
-         name == "KHR_materials_clearcoat" || name == "KHR_materials_sheen";
+         name == "KHR_materials_clearcoat" || name == "KHR_materials_sheen" ||
+         name == "KHR_materials_dispersion";
 }
 
 }  // namespace lensrt::gltf

@@ -425,6 +425,7 @@ void readMaterialExtensions(const Context& ctx, TextureLoader& textures,
     m.attenuationDistance = r->number("attenuationDistance", kInfinityF, 1e-30f, kInfinityF);
     m.attenuationColor = r->colour("attenuationColor", {1, 1, 1});
   }
+  if (const auto r = reader("KHR_materials_dispersion")) m.dispersion = r->number("dispersion", 0, 0, kBig);
   if (const auto r = reader("KHR_materials_clearcoat")) {
     m.clearcoat = r->number("clearcoatFactor", 0, 0, 1);
     m.clearcoatTexture = r->texture("clearcoatTexture", false);

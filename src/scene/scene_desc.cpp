@@ -38,4 +38,10 @@ Vec3f Material::attenuationCoefficient() const {
   return {sigma(attenuationColor.x), sigma(attenuationColor.y), sigma(attenuationColor.z)};
 }
 
+float Material::iorAt(float nm) const {
+  if (!(dispersion > 0)) return ior;
+  const float abbe = 20.0f / dispersion;
+  return std::max(1.0f, ior + (ior - 1) / abbe * (523655.0f / (nm * nm) - 1.5168f));
+}
+
 }  // namespace lensrt

@@ -78,6 +78,11 @@ struct Material {
   float thickness = 0.0f;
   Vec3f attenuationColor{1, 1, 1};
   float attenuationDistance = std::numeric_limits<float>::infinity();
+  // KHR_materials_dispersion: 20 / the Abbe number (0: none). The index at a
+  // wavelength is ior + (ior - 1) / V (523655 nm^2 / l^2 - 1.5168), V = 20 /
+  // dispersion (the extension's linear model through the d line).
+  float dispersion = 0.0f;
+  float iorAt(float nm) const;
   // KHR_materials_clearcoat.
   float clearcoat = 0.0f;
   TextureRef clearcoatTexture;  // R

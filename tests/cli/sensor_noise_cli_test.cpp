@@ -19,10 +19,12 @@ using cli::TempDir;
 const std::string kScene = std::string(LENSRT_SOURCE_DIR) + "/scenes/flat_wall.gltf";
 
 std::vector<std::string> renderArgs(const std::filesystem::path& out, std::vector<std::string> extra) {
-  std::vector<std::string> args = {"render",  kScene, "--camera",  "thin",  "--focal-length",  "50",
-                                   "--fstop", "4",    "--res",     "40x30", "--spp",           "2",
-                                   "--env",   "none", "--noise",   "on",    "--sensor-params", "smartphone",
-                                   "-q",      "-o",   out.string()};
+  std::vector<std::string> args = {"render", kScene, "--camera", "thin", "--focal-length", "50", "--fstop",
+                                   "4", "--res", "40x30", "--spp", "2", "--env", "none", "--noise", "on",
+                                   "--sensor-params", "smartphone",
+                                   // RGB transport: no colour noise, and no negative values in the
+                                   // render (spectral sRGB has them at low spp; the sensor clips them).
+                                   "--spectral", "off", "-q", "-o", out.string()};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }

@@ -54,7 +54,10 @@ def ptc(wall, tmp_path_factory):
         # Temporal noise of each frame about its own noiseless signal; the
         # difference of the two frames removes the PRNU's fixed pattern.
         da, db = a - clean_a, b - clean_b
-        points.append((clean_a.mean(), a.mean(), np.var(da - db) / 2))
+        # The last column: the frames' own difference, which at full well is
+        # 0 (each noiseless frame has the render's colour noise, the reading
+        # none once clipped).
+        points.append((clean_a.mean(), a.mean(), np.var(da - db) / 2, np.var(a - b) / 2))
     return np.array(points), path
 
 
@@ -78,7 +81,7 @@ def test_mean_saturates_at_full_well(ptc):
     points, _ = ptc
     assert points[-1, 0] > 2 * SENSOR["full_well_e"]  # the light would give more
     assert points[-1, 1] == pytest.approx(SENSOR["full_well_e"], rel=1e-3)
-    assert points[-1, 2] < 1.0  # clipped: no noise left
+    assert points[-1, 3] < 1.0  # clipped: no noise left
 
 
 def test_doubling_the_iso_halves_the_electrons_per_dn(wall, ptc):

@@ -25,7 +25,7 @@ using test::sphericalDir;
 TEST(SheenBsdf, CharlieDistributionIsNormalised) {
   // int D(h) cos(theta_h) dh = 1 over the hemisphere.
   for (const float r : {0.3f, 0.6f, 1.0f}) {
-    const SheenBsdf s({1, 1, 1}, r);
+    const SheenBsdf s(Spectrum(1.0f), r);
     const double i =
         integrateSphere([&](const Vec3f& h) { return s.distribution(h) * h.z; }, 0, kPi / 2, 0, 2 * kPi, 400);
     EXPECT_NEAR(i, 1.0, 2e-3) << "roughness " << r;
@@ -36,10 +36,10 @@ TEST(SheenBsdf, AlbedoTableMatchesIntegralAndIsReciprocal) {
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(0, 1);
   for (const float r : {0.25f, 0.5f, 1.0f}) {
-    const SheenBsdf s({1, 1, 1}, r);
+    const SheenBsdf s(Spectrum(1.0f), r);
     for (const double t : {0.0, 45.0, 75.0}) {
       const Vec3f wo = sphericalDir(t * kPi / 180, 0);
-      const double e = integrateSphere([&](const Vec3f& wi) { return s.eval(wo, wi).y * wi.z; }, 0, kPi / 2,
+      const double e = integrateSphere([&](const Vec3f& wi) { return s.eval(wo, wi)[1] * wi.z; }, 0, kPi / 2,
                                        0, 2 * kPi, 300);
       EXPECT_NEAR(s.albedo(wo.z), e, 0.02) << "roughness " << r << " theta " << t;
       EXPECT_LE(e, 1.0);
@@ -47,7 +47,7 @@ TEST(SheenBsdf, AlbedoTableMatchesIntegralAndIsReciprocal) {
     for (int k = 0; k < 50; ++k) {
       const Vec3f a = sphericalDir(std::acos(u(rng)), 2 * kPi * u(rng));
       const Vec3f b = sphericalDir(std::acos(u(rng)), 2 * kPi * u(rng));
-      EXPECT_NEAR(s.eval(a, b).y, s.eval(b, a).y, 1e-5f * std::max(1.0f, s.eval(a, b).y));
+      EXPECT_NEAR(s.eval(a, b)[1], s.eval(b, a)[1], 1e-5f * std::max(1.0f, s.eval(a, b)[1]));
     }
   }
 }
@@ -57,7 +57,7 @@ TEST(ClearcoatBsdf, AlbedoTableMatchesIntegral) {
     const ClearcoatBsdf c(r);
     for (const double t : {0.0, 45.0, 75.0}) {
       const Vec3f wo = sphericalDir(t * kPi / 180, 0);
-      const double e = integrateSphere([&](const Vec3f& wi) { return c.eval(wo, wi).y * wi.z; }, 0, kPi / 2,
+      const double e = integrateSphere([&](const Vec3f& wi) { return c.eval(wo, wi)[1] * wi.z; }, 0, kPi / 2,
                                        0, 2 * kPi, 400);
       EXPECT_NEAR(c.albedo(wo.z), e, 0.01) << "roughness " << r << " theta " << t;
     }
@@ -68,7 +68,7 @@ TEST(ClearcoatBsdf, AlbedoTableMatchesIntegral) {
 
 GltfBsdfParams layered(float clearcoat, float sheen, float transmission, float metallic, bool thin) {
   GltfBsdfParams p;
-  p.base.baseColor = {0.9f, 0.7f, 0.5f};
+  p.base.baseColor = Spectrum(Rgb{0.9f, 0.7f, 0.5f});
   p.base.roughness = 0.6f;
   p.base.metallic = metallic;
   p.transmission = transmission;
@@ -78,7 +78,7 @@ GltfBsdfParams layered(float clearcoat, float sheen, float transmission, float m
   p.dielectric.thin = thin;
   p.clearcoat = clearcoat;
   p.clearcoatRoughness = 0.5f;
-  p.sheenColor = {sheen, sheen * 0.5f, sheen};
+  p.sheenColor = Spectrum(Rgb{sheen, sheen * 0.5f, sheen});
   p.sheenRoughness = 0.5f;
   return p;
 }
@@ -90,7 +90,7 @@ Frame tiltedCoat() {
 
 TEST(GltfBsdf, WithoutExtensionsIsTheMetallicRoughnessBrdf) {
   BsdfParams base;
-  base.baseColor = {0.8f, 0.5f, 0.3f};
+  base.baseColor = Spectrum(Rgb{0.8f, 0.5f, 0.3f});
   base.metallic = 0.3f;
   base.roughness = 0.7f;
   GltfBsdfParams p;
@@ -123,7 +123,7 @@ TEST(GltfBsdf, LayeredReflectionIsReciprocal) {
     for (int k = 0; k < 100; ++k) {
       const Vec3f a = sphericalDir(std::acos(u(rng)), 2 * kPi * u(rng));
       const Vec3f b = sphericalDir(std::acos(u(rng)), 2 * kPi * u(rng));
-      const Rgb f1 = g.eval(a, b), f2 = g.eval(b, a);
+      const Spectrum f1 = g.eval(a, b), f2 = g.eval(b, a);
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(f1[c], f2[c], 1e-4f * std::max(1.0f, f1[c]));
     }
   }
@@ -136,12 +136,12 @@ TEST(GltfBsdf, WhiteLayeredMaterialHasAlbedoAtMostOne) {
   for (const float transmission : {0.0f, 0.5f, 1.0f})
     for (const double t : {0.0, 45.0, 80.0}) {
       GltfBsdfParams p = layered(1, 1, transmission, 0, true);
-      p.base.baseColor = p.dielectric.tint = {1, 1, 1};
-      p.sheenColor = {1, 1, 1};
+      p.base.baseColor = p.dielectric.tint = Spectrum(1.0f);
+      p.sheenColor = Spectrum(Rgb{1, 1, 1});
       const GltfBsdf g(p, frame, frame);
       const Vec3f wo = sphericalDir(t * kPi / 180, 0.0);
       const double albedo = integrateSphere(
-          [&](const Vec3f& wi) { return g.eval(wo, wi).y * std::abs(wi.z); }, 0, kPi, 0, 2 * kPi, 400);
+          [&](const Vec3f& wi) { return g.eval(wo, wi)[1] * std::abs(wi.z); }, 0, kPi, 0, 2 * kPi, 400);
       // (The base's 32x32 albedo table is coarsest at grazing angles.)
       EXPECT_LE(albedo, 1.0 + (t > 70 ? 1e-2 : 5e-3)) << "transmission " << transmission << " theta " << t;
       EXPECT_GT(albedo, 0.6) << "transmission " << transmission << " theta " << t;
@@ -194,7 +194,7 @@ TEST(GltfBsdf, SampleReportsTheValuesOfEvalAndPdf) {
     if (!s) continue;
     transmitted += dot(s->wi, frame.n) < 0;
     EXPECT_NEAR(s->pdf, g.pdf(wo, s->wi), 1e-3f * s->pdf);
-    EXPECT_NEAR(s->f.x, g.eval(wo, s->wi).x, 1e-3f * std::max(1e-3f, s->f.x));
+    EXPECT_NEAR(s->f[0], g.eval(wo, s->wi)[0], 1e-3f * std::max(1e-3f, s->f[0]));
   }
   EXPECT_GT(transmitted, 100);
 }
@@ -207,7 +207,7 @@ TEST(GltfBsdf, PreparedForAViewGivesTheSameBits) {
   std::mt19937 rng(21);
   std::uniform_real_distribution<float> u(0, 1);
   const auto direction = [&] { return test::randomSphereDir(rng); };
-  const auto same = [](const Rgb& a, const Rgb& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const auto same = [](const Spectrum& a, const Spectrum& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   int samples = 0;
   for (int layers = 0; layers < 16; ++layers) {
     for (int k = 0; k < 200; ++k) {

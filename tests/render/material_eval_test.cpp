@@ -63,7 +63,7 @@ TEST(MaterialEval, FactorsAndNormalMapFollowGltfTangentSpace) {
       EXPECT_NEAR(sp.frame.n.x, k.expectedWorld.x, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
       EXPECT_NEAR(sp.frame.n.y, k.expectedWorld.y, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
       EXPECT_NEAR(sp.frame.n.z, k.expectedWorld.z, 1e-2f) << (withTangents ? "TANGENT" : "from uvs");
-      EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.y, 0.25f);
+      EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor[1], 0.25f);
       EXPECT_FLOAT_EQ(sp.bsdf.base.metallic, 0.3f);
       EXPECT_FLOAT_EQ(sp.bsdf.base.roughness, 0.7f);
     }
@@ -135,9 +135,9 @@ TEST(MaterialEval, VertexColourMultipliesTheBaseColour) {
   hit.color = {0.5f, 0.5f, 0.25f, 1};
   const ShadingPoint sp = evaluateMaterial(materials, hit, {0, 1, 0});
   // factor (0.5, 0.25, 1) times COLOR_0 (0.5, 0.5, 0.25).
-  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.x, 0.25f);
-  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.y, 0.125f);
-  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor.z, 0.25f);
+  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor[0], 0.25f);
+  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor[1], 0.125f);
+  EXPECT_FLOAT_EQ(sp.bsdf.base.baseColor[2], 0.25f);
 }
 
 TEST(MaterialEval, TextureSlotsReadTheirUvSetThroughTheirTransform) {
@@ -146,14 +146,14 @@ TEST(MaterialEval, TextureSlotsReadTheirUvSetThroughTheirTransform) {
   hit.uv1 = {0.75f, 0.5f};
   TextureRef ref;
   EXPECT_FLOAT_EQ(
-      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor.x, 0.2f);
+      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor[0], 0.2f);
   ref.texCoord = 1;
   EXPECT_FLOAT_EQ(
-      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor.x, 0.8f);
+      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor[0], 0.8f);
   // Offset -0.5 on TEXCOORD_1: u = 0.25, texel 0.
   ref.transform = UvTransform::fromOffsetRotationScale({-0.5f, 0}, 0, {1, 1});
   EXPECT_FLOAT_EQ(
-      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor.x, 0.2f);
+      evaluateMaterial(MaterialTable(twoTexelBaseColour(ref)), hit, {0, 1, 0}).bsdf.base.baseColor[0], 0.2f);
 }
 
 TEST(MaterialEval, RotatedNormalMapTurnsTheFrameDerivedFromUvs) {
