@@ -8,6 +8,7 @@
 #include <map>
 
 #include "api/aperture_mask_file.h"
+#include "api/film_colour.h"
 #include "api/lens_loading.h"
 #include "camera/lens_camera.h"
 #include "camera/orthographic_camera.h"
@@ -142,6 +143,7 @@ void checkCameraOptions(const CameraOptions& o) {
   if (!o.coatings.empty()) oneOf("--coatings", o.coatings, {"none", "single", "multi"});
   if (!o.film.empty()) oneOf("--film", o.film, {"radiance", "irradiance"});
   oneOf("--spectral", o.spectral, {"on", "off"});
+  checkColourOptions(o);
   oneOf("--noise", o.noise, {"on", "off"});
   if (o.noise == "off" && !o.sensorParams.empty())
     throw UsageError("--sensor-params", "describes the sensor's noise, which needs --noise on");

@@ -50,9 +50,12 @@ struct CameraOptions {
   // --spectral on: light is carried at four wavelengths per sample
   // (render/wavelengths.h); off: in RGB.
   std::string spectral = "on";
-  std::string noise = "off";      // --noise on: the sensor's readout (api/sensor_readout.h)
-  std::string sensorParams;       // --sensor-params NAME|FILE.json; empty: the default sensor
-  std::filesystem::path lensDir;  // the library; addCameraOptions sets the installed one
+  std::string sensorResponse;        // --sensor-response NAME|FILE.csv; empty: cie1931
+  std::string whiteBalance;          // --white-balance auto|none|KELVIN; empty: the response's default
+  std::string outputSpace = "srgb";  // --output-space srgb|rec2020|acescg|xyz|camera
+  std::string noise = "off";         // --noise on: the sensor's readout (api/sensor_readout.h)
+  std::string sensorParams;          // --sensor-params NAME|FILE.json; empty: the default sensor
+  std::filesystem::path lensDir;     // the library; addCameraOptions sets the installed one
 };
 
 // --focus: "auto" -> nullopt, "inf"/"infinity" -> infinity, else metres > 0.

@@ -1,21 +1,39 @@
 // How a render's film records colour, from the camera options: spectral
-// transport through a film response (render/film_response.h), or RGB
+// transport through a film response (render/film_response.h) built from the
+// sensor's response curves, the white balance and the output space, or RGB
 // transport (--spectral off).
+//
+// - cie1931 (the default response): XYZ, adapted (Bradford) from the white
+//   balance's illuminant to the output space's white, then into its RGB.
+// - The white balance: none (the illuminant of RGB (1, 1, 1) light, D65),
+//   KELVIN (CIE daylight from 4000 K, a black body below), or auto (the colour
+//   of the scene's most powerful light: upsampled, times D65). A reflectance
+//   of 1 under that illuminant records the output's white exactly, so a grey
+//   card stays grey.
+// - The output space: srgb (linear Rec. 709), rec2020, acescg, xyz.
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "api/camera_options.h"
+#include "core/warnings.h"
 #include "render/film_response.h"
 
 namespace lensrt {
 
-// None for --spectral off. Throws UsageError for bad options.
-std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& options);
+// None for --spectral off. `sceneLight`: the colour of the scene's dominant
+// light (RenderJob::dominantLightColour), for --white-balance auto. Throws
+// UsageError for bad options.
+std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& options,
+                                                 const std::optional<Rgb>& sceneLight, Warnings& warnings);
 
-// "rgb", or "spectral:" and the response's name: part of a render's identity
-// (a checkpoint resumes, and tiles merge, only with the same transport).
+// "rgb", or "spectral:" and the response's description: part of a render's
+// identity (a checkpoint resumes, and tiles merge, only with the same transport).
 std::string transportDescription(const FilmResponse* response);
+
+// The colour options' checks (part of checkCameraOptions). Throws UsageError.
+void checkColourOptions(const CameraOptions& options);
 
 }  // namespace lensrt

@@ -236,6 +236,18 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& se
                                     .describe();
   metadata.merge(identity(camera, settings));
   metadata.merge(cameraMetadata(camera));
+  // The film's colour: the transport, and what its RGB means.
+  const FilmResponse* response = settings.filmResponse.get();
+  metadata["lensrt:spectral"] = response ? "on" : "off";
+  if (response) {
+    metadata["lensrt:sensor_response"] = response->info().response;
+    metadata["lensrt:white_balance"] = response->info().whiteBalance;
+    metadata["lensrt:output_space"] = response->info().outputSpace;
+    if (response->info().chromaticities.empty())
+      metadata.erase("chromaticities");
+    else
+      metadata["chromaticities"] = response->info().chromaticities;
+  }
   return metadata;
 }
 

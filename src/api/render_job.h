@@ -62,6 +62,8 @@ class RenderJob {
   // One of the four models for these options, framed by the glTF camera;
   // --focus auto asks the scene what the focus pixel sees.
   std::unique_ptr<Camera> makeCamera(const CameraOptions& options, Warnings& warnings) const;
+  // The colour of the scene's most powerful light (--white-balance auto).
+  std::optional<Rgb> dominantLightColour() const { return lights_->dominantColour(); }
 
   // Renders with a progress bar on stderr unless `quiet`.
   RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;

@@ -35,7 +35,7 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   const std::optional<SensorReadout> readout = sensorReadout(request.camera, camera->film());
   checkRawOutput(request.raw);
   RenderSettings settings = request.settings;
-  settings.filmResponse = filmResponse(request.camera);
+  settings.filmResponse = filmResponse(request.camera, job.dominantLightColour(), warnings);
   if (settings.samplesPerPixel < 1) throw UsageError("--spp", "expected at least 1 sample per pixel");
   const PixelRegion frameRegion = PixelRegion::wholeFrame(job.width(), job.height());
   const PixelRegion region = settings.region.value_or(frameRegion);

@@ -81,6 +81,22 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "transport. off: RGB transport")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  cmd.add_option(
+      "--sensor-response", o.sensorResponse,
+      "the sensor's spectral response with --spectral on: cie1931 (default; the CIE 1931 observer, "
+      "colorimetric), a camera from `lensrt sensor list`, or a CSV file of wavelength_nm,r,g,b");
+  cmd.add_option(
+      "--white-balance", o.whiteBalance,
+      "none (the default for cie1931: RGB (1,1,1) light is D65 and records white), auto (balance to "
+      "the scene's most powerful light; the default for cameras) or a colour temperature in K, e.g. "
+      "3200 (a black body below 4000 K, CIE daylight above): a grey card under that light records grey "
+      "(Bradford adaptation)");
+  cmd.add_option(
+         "--output-space", o.outputSpace,
+         "the RGB of the image: srgb (linear Rec. 709 primaries, D65), rec2020, acescg (AP1, ACES white), "
+         "xyz (CIE XYZ), or camera (the camera response's own RGB); the EXR's chromaticities say which. "
+         "PNG and JPEG previews need srgb")
+      ->capture_default_str();
   cmd.add_option("--noise", o.noise,
                  "on: the sensor reads the exposure out as a camera does: photo-electrons (from the lux "
                  "seconds on a pixel with --exposure physical, else 1.0 = full well), shot noise, dark "

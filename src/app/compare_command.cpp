@@ -126,7 +126,6 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   settings.seed = args.seed;
   settings.threads = args.threads;
   settings.tileSize = args.tileSize;
-  settings.filmResponse = filmResponse(args.camera);
   const std::string& envFile = sceneOptions.environment.file;
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
     throw InputError(envFile, "environment map not found");
@@ -137,6 +136,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.frame.scene, message);
   });
   const RenderJob job(sceneOptions, warnings);
+  settings.filmResponse = filmResponse(args.camera, job.dominantLightColour(), warnings);
   const nlohmann::json lens = lensFigures(args.camera);
   // An --fstop wider than the lens opens would leave the full lens at its
   // widest and the ideal models wider: all four use the widest instead.

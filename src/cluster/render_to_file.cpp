@@ -62,6 +62,10 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   if (leader) noteCreatedFolder(checkOutputFile(args.output), args.quiet);
   if (leader) checkRawOutput(args.raw);
   const bool exr = std::filesystem::path(args.output).extension() == ".exr";
+  // A preview's 8 bits mean sRGB; other spaces' numbers would show wrong colours.
+  if (!exr && args.camera.outputSpace != "srgb")
+    throw UsageError("--output-space", args.camera.outputSpace + " needs an .exr output (" + args.output +
+                                           " is a preview, whose colours are sRGB)");
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw UsageError("--checkpoint/--resume",
                      "need an .exr output (-o OUT.exr), the image that is continued");
@@ -94,7 +98,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
   const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film());
-  settings.filmResponse = filmResponse(args.camera);
+  settings.filmResponse = filmResponse(args.camera, job.dominantLightColour(), warnings);
   ImageMetadata identity = job.identity(*camera, settings);
   addSensorIdentity(identity, readout);
   // The running sums live on rank 0 alone: the other ranks get strips.

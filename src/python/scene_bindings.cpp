@@ -141,16 +141,25 @@ class PyScene {
 
   std::unique_ptr<PyRenderResult> render(const py::kwargs& given) const {
     // Every keyword, with the command line's defaults (`lensrt render --help`).
-    static const std::vector<std::string> known = {
-        "camera",        "lens",         "fstop",         "focus",
-        "focus_pixel",   "sensor",       "res",           "spp",
-        "seed",          "aov",          "env",           "env_rotate",
-        "env_intensity", "max_depth",    "camera_node",   "camera_to_world",
-        "threads",       "crop",         "blades",        "blade_rotation",
-        "aperture_mask", "focal_length", "exposure",      "shutter",
-        "iso",           "dispersion",   "coatings",      "film",
-        "spectral",      "noise",        "sensor_params", "raw",
-        "cfa",           "progress"};
+    static const std::vector<std::string> known = {"camera",        "lens",
+                                                   "fstop",         "focus",
+                                                   "focus_pixel",   "sensor",
+                                                   "res",           "spp",
+                                                   "seed",          "aov",
+                                                   "env",           "env_rotate",
+                                                   "env_intensity", "max_depth",
+                                                   "camera_node",   "camera_to_world",
+                                                   "threads",       "crop",
+                                                   "blades",        "blade_rotation",
+                                                   "aperture_mask", "focal_length",
+                                                   "exposure",      "shutter",
+                                                   "iso",           "dispersion",
+                                                   "coatings",      "film",
+                                                   "spectral",      "sensor_response",
+                                                   "white_balance", "output_space",
+                                                   "noise",         "sensor_params",
+                                                   "raw",           "cfa",
+                                                   "progress"};
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
       if (std::find(known.begin(), known.end(), name) == known.end())
@@ -188,6 +197,13 @@ class PyScene {
     if (const py::object v = get("film"); !v.is_none()) c.film = toText(v, "film");
     if (const py::object v = get("spectral"); !v.is_none())
       c.spectral = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "spectral");
+    if (const py::object v = get("sensor_response"); !v.is_none())
+      c.sensorResponse = toPathText(v, "sensor_response");
+    if (const py::object v = get("white_balance"); !v.is_none())
+      c.whiteBalance = py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)
+                           ? fmt::format("{:g}", toDouble(v, "white_balance"))
+                           : toText(v, "white_balance");
+    if (const py::object v = get("output_space"); !v.is_none()) c.outputSpace = toText(v, "output_space");
     if (const py::object v = get("noise"); !v.is_none())
       c.noise = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "noise");
     if (const py::object v = get("sensor_params"); !v.is_none())
@@ -341,8 +357,9 @@ ValueError for a broken one. The GIL is released while it loads.)doc")
        env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
        exposure="normalized", shutter=None, iso=None, dispersion="on", coatings=None,
-       film=None, spectral="on", noise="off", sensor_params=None, raw=None,
-       cfa="RGGB", progress=None) -> RenderResult
+       film=None, spectral="on", sensor_response=None, white_balance=None,
+       output_space="srgb", noise="off", sensor_params=None, raw=None, cfa="RGGB",
+       progress=None) -> RenderResult
 
 Renders the scene as `lensrt render` does, with the same bits for the same
 settings and seed. Keywords only, each the flag of the same name:
@@ -372,7 +389,9 @@ settings and seed. Keywords only, each the flag of the same name:
   film ("radiance" or "irradiance"): as the flags of `lensrt render --help`.
   spectral: "on"/True (default) carries light at four wavelengths per sample
     (colours upsampled to spectra, the CIE 1931 observer, sRGB); "off"/False
-    carries RGB.
+    carries RGB. sensor_response: "cie1931" (default), a camera name or a .csv
+    file. white_balance: "none", "auto" or a colour temperature in K (a number).
+    output_space: "srgb", "rec2020", "acescg", "xyz" or "camera".
   noise: "on"/True reads the exposure out through a sensor (shot, dark and read
     noise, PRNU/DSNU, full well, ISO gain, ADC); channels noiseless.R/G/B keep
     the render. sensor_params: a preset ("default", "full-frame", "smartphone",

@@ -11,7 +11,8 @@
 
 namespace lensrt {
 
-FilmResponse::FilmResponse(Info info, std::vector<Rgb> curves, std::vector<float> illuminant)
+FilmResponse::FilmResponse(Info info, std::vector<Rgb> curves, std::vector<float> illuminant,
+                           const std::function<double(double)>& samplingWeight)
     : info_(std::move(info)), curves_(std::move(curves)), illuminant_(std::move(illuminant)) {
   if (curves_.size() != std::size_t(kSamples) || illuminant_.size() != std::size_t(kSamples))
     throw std::invalid_argument("FilmResponse: tables must have one entry per nm over 360-830 nm");
@@ -22,7 +23,9 @@ FilmResponse::FilmResponse(Info info, std::vector<Rgb> curves, std::vector<float
   for (std::size_t i = 0; i < weights.size(); ++i) {
     const float nm = kMinNm + float(i) + 0.5f;
     const Rgb c = curve(nm);
-    weights[i] = double(std::abs(c.x) + std::abs(c.y) + std::abs(c.z)) * this->illuminant(nm);
+    weights[i] = samplingWeight
+                     ? samplingWeight(nm)
+                     : double(std::abs(c.x) + std::abs(c.y) + std::abs(c.z)) * this->illuminant(nm);
     largest = std::max(largest, weights[i]);
   }
   if (!(largest > 0) || !std::isfinite(largest))
@@ -64,7 +67,8 @@ std::vector<float> d65AtYOne() {
 }  // namespace
 
 FilmResponse FilmResponse::make(Info info, const std::function<Vec3d(double)>& sensor, const Mat3d& toOutput,
-                                const std::function<double(double)>& neutral, const Vec3d& neutralTarget) {
+                                const std::function<double(double)>& neutral, const Vec3d& neutralTarget,
+                                const std::function<double(double)>& samplingWeight) {
   std::vector<Vec3d> rgb(static_cast<std::size_t>(kSamples));
   std::vector<double> white(static_cast<std::size_t>(kSamples));
   for (std::size_t i = 0; i < rgb.size(); ++i) {
@@ -84,7 +88,7 @@ FilmResponse FilmResponse::make(Info info, const std::function<Vec3d(double)>& s
     throw std::invalid_argument("FilmResponse: the film records no white in some channel");
   std::vector<Rgb> curves(rgb.size());
   for (std::size_t i = 0; i < rgb.size(); ++i) curves[i] = Rgb(rgb[i] * scale);
-  return FilmResponse(std::move(info), std::move(curves), d65AtYOne());
+  return FilmResponse(std::move(info), std::move(curves), d65AtYOne(), samplingWeight);
 }
 
 namespace {
@@ -97,10 +101,15 @@ FilmResponse makeCie1931Srgb() {
   return FilmResponse::make(
       {"cie1931", "none", "srgb", "0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0.329"},
       [](double nm) { return cieXyzMatching(nm) / kCieYIntegral; }, srgb.xyzToRgb,
-      [whiteY](double nm) { return d65(nm) / whiteY; }, {1, 1, 1});
+      [whiteY](double nm) { return d65(nm) / whiteY; }, {1, 1, 1}, FilmResponse::cie1931SamplingWeight);
 }
 
 }  // namespace
+
+double FilmResponse::cie1931SamplingWeight(double nm) {
+  const Vec3d c = colorSpace(ColorSpaceId::Srgb).xyzToRgb * cieXyzMatching(nm);
+  return (std::abs(c.x) + std::abs(c.y) + std::abs(c.z)) * d65(nm);
+}
 
 std::string FilmResponse::describe() const {
   std::string s = info_.response;

@@ -37,7 +37,10 @@ class FilmResponse {
 
   // curves[i], illuminant[i]: at kMinNm + i nm. The illuminant is normalised
   // to luminance Y = 1 (the white of RGB (1, 1, 1) light).
-  FilmResponse(Info info, std::vector<Rgb> curves, std::vector<float> illuminant);
+  // samplingWeight: the density wavelengths are drawn from, up to a factor
+  // (none: |c_R| + |c_G| + |c_B| times the illuminant).
+  FilmResponse(Info info, std::vector<Rgb> curves, std::vector<float> illuminant,
+               const std::function<double(double)>& samplingWeight = {});
 
   // Curves from a sensor's three curves s(l) (the CIE observer's xbar, ybar,
   // zbar over their ybar integral, or a camera's) mapped by `toOutput`, then
@@ -45,8 +48,15 @@ class FilmResponse {
   // spectrum with Y = 1) records `neutralTarget` exactly, as the renderer
   // integrates (the product of the linearly interpolated tables). The light
   // of RGB (1, 1, 1) is D65 at Y = 1.
+  // Wavelengths are drawn by `samplingWeight`, which a caller keeps the same
+  // across white balances and output spaces so that renders differing only
+  // in those trace the same paths.
   static FilmResponse make(Info info, const std::function<Vec3d(double)>& sensor, const Mat3d& toOutput,
-                           const std::function<double(double)>& neutral, const Vec3d& neutralTarget);
+                           const std::function<double(double)>& neutral, const Vec3d& neutralTarget,
+                           const std::function<double(double)>& samplingWeight);
+  // The CIE observer's sampling weight: its linear sRGB curves'
+  // |r| + |g| + |b| under D65, whatever the output space or white balance.
+  static double cie1931SamplingWeight(double nm);
 
   // The CIE 1931 observer into linear Rec. 709 (sRGB) RGB under D65: a
   // reflectance of 1 lit by RGB (1, 1, 1) records (1, 1, 1) exactly.

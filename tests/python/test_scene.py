@@ -141,14 +141,15 @@ def test_every_keyword_is_read(dof, tmp_path):
                         env_rotate=10, env_intensity=0.5, max_depth=3, camera_node=0, camera_to_world=pose,
                         threads=1, crop=(0, 24, 0, 16), blades=6, blade_rotation=15, aperture_mask=None,
                         focal_length=None, exposure="physical", shutter=1 / 250, iso=400, dispersion=False,
-                        coatings="multi", film="irradiance", spectral=False, noise=True, sensor_params="smartphone",
+                        coatings="multi", film="irradiance", spectral=True, sensor_response="cie1931", white_balance=5000,
+                        output_space="acescg", noise=True, sensor_params="smartphone",
                         raw=tmp_path / "a.dng", cfa="GRBG", progress=lambda done, total: None)
     m = result.metadata
     assert "f/4" in m["lensrt:camera"] and "physical 0.004s ISO400" in m["lensrt:exposure"]
     assert m["lensrt:coatings"] == "multi" and m["lensrt:dispersion"] == "off"
     assert "smartphone" in m["lensrt:sensor_noise"] and (tmp_path / "a.dng").exists()
     assert "max_depth=3" in m["lensrt:settings"] and m["lensrt:seed"] == "3"
-    assert "transport=rgb" in m["lensrt:settings"]
+    assert "transport=spectral:cie1931,wb=5000K,output=acescg" in m["lensrt:settings"]
 
 
 def test_render_help_lists_every_keyword_of_the_stub():
@@ -156,7 +157,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
     render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
     keywords = [a.arg for a in render.args.kwonlyargs]
-    assert len(keywords) == 34
+    assert len(keywords) == 37
     doc = lensrt.Scene.render.__doc__
     for k in keywords:
         assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line
