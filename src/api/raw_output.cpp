@@ -3,11 +3,35 @@
 #include <filesystem>
 
 #include "api/output_file.h"
+#include "color/chromatic_adaptation.h"
+#include "color/color_space.h"
 #include "core/error.h"
 #include "sensor/dng_file.h"
 #include "sensor/mosaic.h"
 
 namespace lensrt {
+
+namespace {
+
+// DNG's ColorMatrix1: XYZ under its calibration illuminant (D65) to the raw's
+// RGB. The mosaic holds the image's RGB, which is the output space's, white
+// balanced so that D65 (or the chosen white) records that space's white: the
+// space's XYZ-to-RGB after the adaptation from D65 to its white.
+std::array<double, 9> rawColorMatrix(const CameraOptions& options) {
+  const std::optional<ColorSpaceId> id = parseColorSpace(options.outputSpace);
+  if (!id || *id == ColorSpaceId::Srgb) return kXyzToLinearSrgb;
+  const ColorSpace& space = colorSpace(*id);
+  const Vec3d d65 = colorSpace(ColorSpaceId::Srgb).rgbToXyz * Vec3d{1, 1, 1};
+  const Mat3d m = *id == ColorSpaceId::Xyz
+                      ? Mat3d{}
+                      : space.xyzToRgb * bradfordAdaptation(d65, space.rgbToXyz * Vec3d{1, 1, 1});
+  std::array<double, 9> out{};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out[std::size_t(3 * r + c)] = m(r, c);
+  return out;
+}
+
+}  // namespace
 
 void checkRawOutput(const RawOutputOptions& o) {
   if (!parseCfaPattern(o.cfa))
@@ -35,7 +59,7 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
       d.pattern.name[std::size_t(y * 2 + x)] = "RGB"[colour];
     }
   d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
-  d.colorMatrix1 = kXyzToLinearSrgb;
+  d.colorMatrix1 = rawColorMatrix(options);
   d.exposureSeconds = shutterSeconds(options);
   d.iso = options.exposure == "physical" ? options.iso.value_or(100.0)
                                          : (readout ? readout->params.baseIso : 100.0);
