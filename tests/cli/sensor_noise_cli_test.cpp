@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "cli/cli_util.h"
 #include "image/image_io.h"
@@ -77,8 +78,9 @@ TEST(SensorNoiseCli, TilesReadOutTheWholeFramesNumbers) {
   EXPECT_NE(mixed.err.find("settings"), std::string::npos) << mixed.err;
 }
 
-// `lensrt sensor list --json` prints each preset as a sensor file holds it:
-// written out and given back, it reads out the preset's very numbers.
+// `lensrt sensor list --json` prints each preset as a sensor file holds it
+// (in "sensor_params"): written out and given back, it reads out the preset's
+// very numbers.
 TEST(SensorNoiseCli, ListedPresetsAreSensorFiles) {
   const TempDir dir;
   const RunResult list = runLensrt({"sensor", "list", "--json"});
@@ -86,12 +88,11 @@ TEST(SensorNoiseCli, ListedPresetsAreSensorFiles) {
   const RunResult text = runLensrt({"sensor", "list"});
   for (const char* name : {"default", "full-frame", "smartphone", "machine-vision"})
     EXPECT_NE(text.out.find(name), std::string::npos) << name;
-  // The third preset (smartphone), cut out of the array by its braces.
-  std::size_t start = 0;
-  for (int i = 0; i < 3; ++i) start = list.out.find('{', start + (i ? 1 : 0));
-  const std::string one = list.out.substr(start, list.out.find('}', start) - start + 1);
-  ASSERT_NE(one.find("\"smartphone\""), std::string::npos) << one;
-  cli::writeFile(dir / "phone.json", one);
+  const nlohmann::json presets = nlohmann::json::parse(list.out).at("sensor_params");
+  ASSERT_EQ(presets.size(), 4u);
+  const nlohmann::json& one = presets[2];
+  ASSERT_EQ(one.at("name"), "smartphone") << one;
+  cli::writeFile(dir / "phone.json", one.dump(2));
   std::vector<std::string> fromFile = renderArgs(dir / "file.exr", {});
   fromFile[17] = (dir / "phone.json").string();
   ASSERT_EQ(runLensrt(fromFile).status, 0);
