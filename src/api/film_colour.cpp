@@ -11,6 +11,7 @@
 #include "color/illuminant.h"
 #include "color/rgb_to_spectrum.h"
 #include "core/error.h"
+#include "sensor/color_checker.h"
 
 namespace lensrt {
 
@@ -35,7 +36,7 @@ std::optional<double> parseKelvin(const std::string& text) {
 }
 
 std::string responseName(const CameraOptions& o) {
-  return o.sensorResponse.empty() ? "cie1931" : o.sensorResponse;
+  return o.sensorResponse.empty() ? std::string(kCie1931Response) : o.sensorResponse;
 }
 
 // A spectrum over 360-830 nm scaled to luminance Y = 1.
@@ -65,34 +66,41 @@ void checkColourOptions(const CameraOptions& o) {
     return;
   }
   if (!o.whiteBalance.empty()) parseKelvin(o.whiteBalance);
-  if (o.outputSpace == "camera")
+  if (o.outputSpace != "camera" && !parseColorSpace(o.outputSpace))
+    throw UsageError("--output-space",
+                     "expected srgb, rec2020, acescg, xyz or camera, got '" + o.outputSpace + "'");
+  loadSensorResponse(responseName(o));  // an unknown name or a bad file fails before the scene loads
+  if (o.outputSpace == "camera" && responseName(o) == kCie1931Response)
     throw UsageError("--output-space",
                      "camera is the RGB of a camera's response; the CIE 1931 observer has none "
                      "(choose --sensor-response, or srgb, rec2020, acescg, xyz)");
-  if (!parseColorSpace(o.outputSpace))
-    throw UsageError("--output-space",
-                     "expected srgb, rec2020, acescg, xyz or camera, got '" + o.outputSpace + "'");
-  if (responseName(o) != "cie1931")
-    throw UsageError("--sensor-response", "unknown response '" + o.sensorResponse + "' (known: cie1931)");
 }
 
 std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const std::optional<Rgb>& sceneLight,
                                                  Warnings& warnings) {
   checkColourOptions(o);
   if (o.spectral == "off") return nullptr;
-  const std::string wb = o.whiteBalance.empty() ? "none" : o.whiteBalance;
-  const ColorSpace& space = colorSpace(*parseColorSpace(o.outputSpace));
-  if (wb == "none" && space.id == ColorSpaceId::Srgb)
+  const SensorResponse sensor = loadSensorResponse(responseName(o));
+  // Cameras balance automatically by default, as a camera does; the CIE
+  // observer records colorimetry (D65 is white).
+  const std::string wb = !o.whiteBalance.empty() ? o.whiteBalance : (sensor.cie1931 ? "none" : "auto");
+  const bool cameraSpace = o.outputSpace == "camera";
+  const ColorSpace& space = colorSpace(cameraSpace ? ColorSpaceId::Srgb : *parseColorSpace(o.outputSpace));
+  if (sensor.cie1931 && wb == "none" && space.id == ColorSpaceId::Srgb)
     // The built-in response lives as long as the program: a non-owning pointer.
     return std::shared_ptr<const FilmResponse>(std::shared_ptr<const void>(), &FilmResponse::cie1931Srgb());
 
-  // The white balance's illuminant, and what it is called in the metadata.
   FilmResponse::Info info;
-  info.outputSpace = std::string(space.name);
-  info.chromaticities =
-      fmt::format("{:g} {:g} {:g} {:g} {:g} {:g} {:.6g} {:.6g}", space.red.x, space.red.y, space.green.x,
-                  space.green.y, space.blue.x, space.blue.y, space.white.x, space.white.y);
-  std::function<double(double)> neutral = atUnitY([](double nm) { return d65(nm); });
+  info.response = sensor.name;
+  info.outputSpace = cameraSpace ? "camera" : std::string(space.name);
+  if (!cameraSpace)
+    info.chromaticities =
+        fmt::format("{:g} {:g} {:g} {:g} {:g} {:g} {:.6g} {:.6g}", space.red.x, space.red.y, space.green.x,
+                    space.green.y, space.blue.x, space.blue.y, space.white.x, space.white.y);
+  // The white balance's illuminant (Y = 1), and what the metadata calls it.
+  const auto d65AtUnitY = atUnitY([](double nm) { return d65(nm); });
+  std::function<double(double)> neutral = d65AtUnitY;
+  info.whiteBalance = "none";
   if (const std::optional<double> kelvin = parseKelvin(wb)) {
     neutral = atUnitY([k = *kelvin](double nm) { return whiteSpectrum(k, nm); });
     info.whiteBalance = fmt::format("{:g}K", *kelvin);
@@ -106,17 +114,67 @@ std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const s
       info.whiteBalance = "auto:none";
     }
   }
-  // XYZ adapted from the neutral's white to the output's (CIE XYZ: to D65,
-  // or left alone without a white balance).
-  const Vec3d source = spectrumToXyz(neutral);
-  const Vec3d d65White = spectrumToXyz(atUnitY([](double nm) { return d65(nm); }));
-  Vec3d target = space.rgbToXyz * Vec3d{1, 1, 1};
-  if (space.id == ColorSpaceId::Xyz) target = d65White;
-  const Mat3d adapt =
-      (space.id == ColorSpaceId::Xyz && wb == "none") ? Mat3d{} : bradfordAdaptation(source, target);
+
+  if (sensor.cie1931) {
+    // XYZ adapted from the neutral's white to the output's (CIE XYZ: to D65,
+    // or left alone without a white balance).
+    const Vec3d source = spectrumToXyz(neutral);
+    const Vec3d target =
+        space.id == ColorSpaceId::Xyz ? spectrumToXyz(d65AtUnitY) : space.rgbToXyz * Vec3d{1, 1, 1};
+    const Mat3d adapt =
+        (space.id == ColorSpaceId::Xyz && wb == "none") ? Mat3d{} : bradfordAdaptation(source, target);
+    return std::make_shared<const FilmResponse>(FilmResponse::make(
+        info, [](double nm) { return cieXyzMatching(nm) / kCieYIntegral; }, space.xyzToRgb * adapt, neutral,
+        space.xyzToRgb * target, FilmResponse::cie1931SamplingWeight));
+  }
+
+  // A camera: its R, G, B curves, drawn in proportion to their sum under D65.
+  const auto curves = [&sensor](double nm) { return sensor.at(nm); };
+  const auto samplingWeight = [&sensor](double nm) {
+    const Vec3d c = sensor.at(nm);
+    return (c.x + c.y + c.z) * d65(nm);
+  };
+  if (cameraSpace) {
+    // The camera's own RGB, unbalanced as a raw file is (the white balance
+    // is the metadata's): scaled as one so that D65's green records 1.
+    Vec3d recorded{0, 0, 0};
+    for (double nm = kCieMinNm; nm <= kCieMaxNm; nm += 1) recorded += sensor.at(nm) * d65AtUnitY(nm);
+    return std::make_shared<const FilmResponse>(
+        FilmResponse::make(info, curves, Mat3d{}, d65AtUnitY, recorded / recorded.y, samplingWeight));
+  }
+  // Camera RGB to XYZ: the least-squares 3x3 over the ColorChecker's 24
+  // patches lit by the white balance's illuminant (pbrt-v4's PixelSensor),
+  // then adapted to the output's white; the grey card is then exact.
+  const Mat3d toXyz = fitCameraToXyz(sensor, neutral);
+  const Vec3d target =
+      space.id == ColorSpaceId::Xyz ? spectrumToXyz(d65AtUnitY) : space.rgbToXyz * Vec3d{1, 1, 1};
+  const Mat3d adapt = bradfordAdaptation(spectrumToXyz(neutral), target);
   return std::make_shared<const FilmResponse>(FilmResponse::make(
-      info, [](double nm) { return cieXyzMatching(nm) / kCieYIntegral; }, space.xyzToRgb * adapt, neutral,
-      space.xyzToRgb * target, FilmResponse::cie1931SamplingWeight));
+      info, curves, space.xyzToRgb * adapt * toXyz, neutral, space.xyzToRgb * target, samplingWeight));
+}
+
+Mat3d fitCameraToXyz(const SensorResponse& sensor, const std::function<double(double)>& illuminant) {
+  // Normal equations of min sum |M c_p - x_p|^2: M = (sum x c^T)(sum c c^T)^-1.
+  Mat3d xc, cc;
+  xc.m = {};
+  cc.m = {};
+  for (const ColorCheckerPatch& patch : colorCheckerPatches()) {
+    Vec3d c{0, 0, 0}, x{0, 0, 0};
+    for (double nm = kCieMinNm; nm <= kCieMaxNm; nm += 1) {
+      const double light = patch.at(nm) * illuminant(nm);
+      c += sensor.at(nm) * light;
+      x += cieXyzMatching(nm) * (light / kCieYIntegral);
+    }
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        xc.m[i][j] += x[i] * c[j];
+        cc.m[i][j] += c[i] * c[j];
+      }
+  }
+  const std::optional<Mat3d> inverse = cc.inverse();
+  if (!inverse)
+    throw InputError(sensor.name, "the response's channels are not independent: no colour matrix fits");
+  return xc * *inverse;
 }
 
 std::string transportDescription(const FilmResponse* response) {

@@ -5,6 +5,9 @@
 //
 // - cie1931 (the default response): XYZ, adapted (Bradford) from the white
 //   balance's illuminant to the output space's white, then into its RGB.
+// - A camera (--sensor-response NAME|FILE.csv): its R, G, B curves, through a
+//   3x3 matrix to XYZ fitted over the ColorChecker under the white balance's
+//   illuminant, then as cie1931; or its own RGB (--output-space camera).
 // - The white balance: none (the illuminant of RGB (1, 1, 1) light, D65),
 //   KELVIN (CIE daylight from 4000 K, a black body below), or auto (the colour
 //   of the scene's most powerful light: upsampled, times D65). A reflectance
@@ -20,6 +23,7 @@
 #include "api/camera_options.h"
 #include "core/warnings.h"
 #include "render/film_response.h"
+#include "sensor/sensor_response.h"
 
 namespace lensrt {
 
@@ -35,5 +39,9 @@ std::string transportDescription(const FilmResponse* response);
 
 // The colour options' checks (part of checkCameraOptions). Throws UsageError.
 void checkColourOptions(const CameraOptions& options);
+
+// A camera's RGB to XYZ: the least-squares 3x3 over the ColorChecker's 24
+// patches lit by `illuminant` (as pbrt-v4's PixelSensor fits it).
+Mat3d fitCameraToXyz(const SensorResponse& sensor, const std::function<double(double)>& illuminant);
 
 }  // namespace lensrt

@@ -73,6 +73,31 @@ TEST(ColourCli, WhiteBalanceKeepsAGreyCardGrey) {
   EXPECT_GT(tungsten.z, 1.3 * tungsten.x);
 }
 
+// A camera's response: its fitted matrix keeps a grey card grey, balanced to
+// the sky automatically (a camera's default), and its own RGB is unbalanced.
+TEST(ColourCli, ACameraResponseKeepsAGreyCardGrey) {
+  const TempDir dir;
+  for (const std::string camera : {"nikon-d850", "canon-eos-5d-mark-iv", "sony-ilce-7m3"}) {
+    SCOPED_TRACE(camera);
+    ImageMetadata meta;
+    const Vec3d warm = renderCard(dir, {"--env", "constant:1,0.55,0.25", "--sensor-response", camera}, &meta);
+    EXPECT_NEAR(warm.x / warm.y, 1.0, 0.01);
+    EXPECT_NEAR(warm.z / warm.y, 1.0, 0.01);
+    EXPECT_EQ(meta["lensrt:sensor_response"], camera);
+    EXPECT_EQ(meta["lensrt:white_balance"].rfind("auto:x=", 0), 0u);
+    const Vec3d daylight =
+        renderCard(dir, {"--env", "constant:1", "--sensor-response", camera, "--white-balance", "none"});
+    EXPECT_NEAR(daylight.x / daylight.y, 1.0, 0.01);
+    EXPECT_NEAR(daylight.z / daylight.y, 1.0, 0.01);
+    // The camera's own RGB: green leads under daylight, as in a raw file.
+    const Vec3d raw = renderCard(
+        dir, {"--env", "constant:1", "--sensor-response", camera, "--output-space", "camera"}, &meta);
+    EXPECT_GT(raw.y, 1.2 * raw.x);
+    EXPECT_GT(raw.y, 1.2 * raw.z);
+    EXPECT_EQ(meta.count("chromaticities"), 0u);
+  }
+}
+
 TEST(ColourCli, OutputSpacesAreTheSameRenderInAnotherRgb) {
   const TempDir dir;
   const std::string scene = std::string(LENSRT_SOURCE_DIR) + "/scenes/cornell.gltf";
