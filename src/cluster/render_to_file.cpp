@@ -18,6 +18,7 @@
 #include "cluster/distributed_render.h"
 #include "cluster/interrupt.h"
 #include "core/error.h"
+#include "image/image_io.h"
 #include "render/progress.h"
 
 namespace lensrt {
@@ -71,6 +72,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
     throw InputError(envFile, "environment map not found");
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile, ec))
     throw InputError(envFile, "the environment map is not a regular file");
+  if (!envFile.empty()) checkImageReader(envFile);  // before the scene loads
 
   // Warnings wait until the scene and camera are set up, so that a run that
   // fails there prints its one error line alone.

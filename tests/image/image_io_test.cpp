@@ -343,7 +343,11 @@ TEST(ImageIo, RadianceRunLengthScanlines) {
 TEST(ImageIo, WritableExtensions) {
   EXPECT_TRUE(isWritableImageExtension("a.EXR"));
   EXPECT_TRUE(isWritableImageExtension("dir/a.jpeg"));
-  EXPECT_FALSE(isWritableImageExtension("a.tiff"));
+  EXPECT_TRUE(isWritableImageExtension("a.tiff"));
+  EXPECT_TRUE(isWritableImageExtension("a.DPX"));
+  EXPECT_TRUE(isWritableImageExtension("a.jp2"));
+  EXPECT_TRUE(isWritableImageExtension("a.webp"));
+  EXPECT_FALSE(isWritableImageExtension("a.tga"));
   EXPECT_FALSE(isWritableImageExtension("a"));
 }
 
