@@ -12,6 +12,7 @@
 
 #include "core/constants.h"
 #include "core/png_allocation.h"
+#include "scene/data_uri.h"
 #include "scene/gltf_values.h"
 #include "scene/texture_decoding.h"
 
@@ -168,9 +169,17 @@ class TextureLoader {
     const tinygltf::Image& image = ctx_.model.images[static_cast<std::size_t>(source)];
     const unsigned char* bytes = nullptr;
     std::size_t size = 0;
+    std::optional<std::string> dataUriBytes;
     if (image.as_is && !image.image.empty()) {
       bytes = image.image.data();
       size = image.image.size();
+    } else if (image.uri.starts_with("data:")) {
+      // A media type tinygltf does not decode (image/webp, image/tiff): the
+      // loader checked its size against the data: URI limit.
+      dataUriBytes = decodeBase64DataUri(image.uri);
+      if (!dataUriBytes) return TextureDecodeFailure{"is a data: URI without base64 data", "", ""};
+      bytes = reinterpret_cast<const unsigned char*>(dataUriBytes->data());
+      size = dataUriBytes->size();
     } else if (image.bufferView >= 0) {
       const auto& views = ctx_.model.bufferViews;
       if (static_cast<std::size_t>(image.bufferView) >= views.size())
