@@ -98,7 +98,8 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("scene", args->frame.scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
       ->required();
   cmd->add_option("-o,--output", args->output,
-                  "output image: .exr (linear float, all channels and metadata) or .png/.jpg (sRGB preview), "
+                  "output image: .exr (linear float, all channels and metadata), .png/.jpg (8-bit sRGB "
+                  "preview), .tif/.jp2 (16-bit sRGB), .webp (8-bit sRGB) or .dpx (10-bit Cineon log); "
                   "e.g. -o out/a.exr")
       ->required();
   cmd->add_option("--spp", args->spp, "samples per pixel (>= 1), e.g. --spp 64")
