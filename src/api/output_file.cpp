@@ -90,9 +90,10 @@ std::optional<fs::path> checkOutputFile(const fs::path& out) {
   return created;
 }
 
-void writeOutputImage(const fs::path& out, const Image& image, const ImageMetadata& metadata) {
+void writeOutputImage(const fs::path& out, const Image& image, const ImageMetadata& metadata,
+                      const ImageWriteOptions& options) {
   try {
-    writeImage(out, image, metadata);
+    writeImage(out, image, metadata, options);
   } catch (const InputError& e) {
     // The failed write's temporary file is gone again: judge the space by
     // what the image needs uncompressed.

@@ -61,6 +61,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   std::error_code ec;
   if (leader) noteCreatedFolder(checkOutputFile(args.output), args.quiet);
   if (leader) checkRawOutput(args.raw);
+  if (leader && args.display) checkDisplayTransform(args.output, *args.display);
   const bool exr = std::filesystem::path(args.output).extension() == ".exr";
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw UsageError("--checkpoint/--resume",
@@ -175,11 +176,19 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
 
   // 3. Write: with the running sums when it can be continued.
   {
-    const ImageMetadata metadata = metadataOf(result);
+    ImageMetadata metadata = metadataOf(result);
+    ImageWriteOptions options;
+    options.display = args.display;
+    if (args.display) {
+      std::string shown = args.display->display.empty() ? "(default display)" : args.display->display;
+      shown += " / ";
+      shown += args.display->view.empty() ? "(default view)" : args.display->view;
+      metadata["lensrt:ocio_display_view"] = shown;
+    }
     if (args.checkpointSeconds > 0 || !finished)
-      writeCheckpoint(args.output, state, result.output.image, metadata);
+      writeCheckpoint(args.output, state, result.output.image, metadata, options);
     else
-      writeOutputImage(args.output, result.output.image, metadata);
+      writeOutputImage(args.output, result.output.image, metadata, options);
     if (!args.raw.file.empty() && finished)
       writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera);
   }

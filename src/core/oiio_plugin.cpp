@@ -247,7 +247,7 @@ void OiioPlugin::displayTransform(const std::string& option, std::vector<float>&
     const auto release = [this](void* p) { free_(p); };
     const std::unique_ptr<char, decltype(release)> owned(names, release);
     message += *owned ? std::string(" (displays and their views: ") + owned.get() + ")"
-                      : std::string(" (the OpenColorIO config has no displays: $OCIO names one)");
+                      : std::string(" ($OCIO names the config file, e.g. an ACES config)");
   }
   throw UsageError(option, message);
 }

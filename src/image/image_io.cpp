@@ -111,12 +111,9 @@ std::vector<int> previewChannels(const fs::path& file, const Image& image) {
 std::string encode(const fs::path& file, FileKind kind, const Image& image, const ImageMetadata& metadata,
                    const ImageWriteOptions& options) {
   if (kind == FileKind::Exr) return encodeExr(file.string(), image, metadata, options.halfFloat);
-  const std::vector<int> source = previewChannels(file, image);
-  const std::size_t pixelCount = std::size_t(image.width) * image.height;
-  std::string rgb(pixelCount * 3, '\0');
-  for (std::size_t i = 0; i < pixelCount; ++i)
-    for (int c = 0; c < 3; ++c)
-      rgb[i * 3 + c] = char(srgbEncode8(image.pixels[i * image.channelCount() + source[c]]));
+  const std::vector<float> values = previewValues(file, image, previewChannels(file, image), options.display);
+  std::string rgb(values.size(), '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) rgb[i] = char(std::lround(values[i] * 255.0f));
   return encodePreview(file.string(), kind == FileKind::Png ? PreviewFormat::Png : PreviewFormat::Jpeg,
                        image.width, image.height, rgb, metadata);
 }
@@ -188,7 +185,7 @@ void writeImage(const fs::path& file, const Image& image, const ImageMetadata& m
   if (kind == FileKind::Plugin) {
     const std::vector<int> source = previewChannels(file, image);
     writeFileThrough(file, [&](const fs::path& tmp) {
-      writeWithPlugin(file, tmp, *pluginOutputFor(file), image, source, metadata);
+      writeWithPlugin(file, tmp, *pluginOutputFor(file), image, source, metadata, options.display);
     });
     return;
   }
@@ -211,6 +208,18 @@ void writeFileThrough(const fs::path& file, const std::function<void(const fs::p
   fs::rename(tmp.path(), file, ec);
   if (ec) throw InputError(file.string(), "cannot replace the file: " + ec.message());
   tmp.release();
+}
+
+void checkDisplayTransform(const fs::path& file, const DisplayTransform& display) {
+  const FileKind kind = kindOf(file);
+  if (kind == FileKind::Exr || kind == FileKind::Unknown || pluginOutputFor(file) == PluginOutput::Dpx) {
+    std::string why = "applies to previews (.png, .jpg, .tif, .jp2, .webp), not ";
+    why += file.extension().string();
+    why += " files (scene-linear or log)";
+    throw UsageError("--ocio-display", why);
+  }
+  Image probe(1, 1, {"R", "G", "B"});
+  previewValues(file, probe, {0, 1, 2}, display);
 }
 
 void checkImageWriter(const fs::path& file) {

@@ -22,10 +22,12 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "image/image.h"
+#include "image/preview_values.h"
 
 namespace lensrt {
 
@@ -33,6 +35,9 @@ struct ImageWriteOptions {
   // EXR only: store 16-bit half floats instead of 32-bit floats. Halves the
   // file size; values keep ~3 significant digits and saturate at 65504.
   bool halfFloat = false;
+  // Previews only (.png, .jpg, .tif, .jp2, .webp): OpenColorIO's display
+  // transform instead of the sRGB curve (preview_values.h).
+  std::optional<DisplayTransform> display;
 };
 
 // Throws InputError(file, reason) with a one-line reason on any failure.
@@ -79,6 +84,11 @@ bool isWritableImageExtension(const std::filesystem::path& file);
 // True for the extensions of the formats readImage reads (any case): .exr,
 // .hdr, .png, .jpg, .jpeg, and the plugin's (.tif, .webp, .jp2, .dpx, ...).
 bool isReadableImageExtension(const std::filesystem::path& file);
+
+// Throws UsageError("--ocio-display", ...) unless `file` is a preview whose
+// display transform can be made (the plugin loads, the config has the
+// display and view): a command checks this before it renders.
+void checkDisplayTransform(const std::filesystem::path& file, const DisplayTransform& display);
 
 // Throws InputError(file, "writing TIFF files needs lensrt's OpenImageIO
 // plugin: ...") when `file`'s format is written through the plugin and it

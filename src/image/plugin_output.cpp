@@ -6,7 +6,6 @@
 #include "core/error.h"
 #include "core/oiio_plugin.h"
 #include "image/cineon.h"
-#include "image/srgb.h"
 
 namespace lensrt {
 namespace {
@@ -69,19 +68,23 @@ const char* pluginOutputLabel(PluginOutput format) {
 
 void writeWithPlugin(const std::filesystem::path& file, const std::filesystem::path& temporary,
                      PluginOutput format, const Image& image, const std::vector<int>& rgb,
-                     const ImageMetadata& metadata) {
+                     const ImageMetadata& metadata, const std::optional<DisplayTransform>& display) {
   const OutputEncoding e = encodingOf(format);
   std::string purpose = "writing ";
   purpose += e.label;
   purpose += " files";
   const OiioPlugin& plugin = OiioPlugin::get(file.string(), purpose);
-  const std::size_t pixelCount = std::size_t(image.width) * std::size_t(image.height);
-  std::vector<float> values(pixelCount * 3);
-  for (std::size_t i = 0; i < pixelCount; ++i)
-    for (std::size_t c = 0; c < 3; ++c) {
-      const float v = image.pixels[i * image.channelCount() + std::size_t(rgb[c])];
-      values[i * 3 + c] = e.cineonLog ? cineonEncode(v) / cineon::kMaxCode : srgbEncode(v);
-    }
+  std::vector<float> values;
+  if (e.cineonLog) {
+    const std::size_t pixelCount = std::size_t(image.width) * std::size_t(image.height);
+    values.resize(pixelCount * 3);
+    for (std::size_t i = 0; i < pixelCount; ++i)
+      for (std::size_t c = 0; c < 3; ++c)
+        values[i * 3 + c] =
+            cineonEncode(image.pixels[i * image.channelCount() + std::size_t(rgb[c])]) / cineon::kMaxCode;
+  } else {
+    values = previewValues(file, image, rgb, display);
+  }
   PluginWriteOptions options;
   options.format = e.format;
   options.bits = e.bits;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/preview_values.h"
 
 namespace lensrt {
 
@@ -32,8 +33,9 @@ const char* pluginOutputLabel(PluginOutput format);
 // Writes `image`'s channels `rgb` (three indices) to `temporary`, the file
 // that will be renamed to `file` (which names it in errors). Throws
 // InputError(file, reason), also when the plugin cannot be loaded.
+// `display`: the previews' OpenColorIO display transform (not for DPX).
 void writeWithPlugin(const std::filesystem::path& file, const std::filesystem::path& temporary,
                      PluginOutput format, const Image& image, const std::vector<int>& rgb,
-                     const ImageMetadata& metadata);
+                     const ImageMetadata& metadata, const std::optional<DisplayTransform>& display);
 
 }  // namespace lensrt
