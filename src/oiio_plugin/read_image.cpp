@@ -5,10 +5,14 @@
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "core/oiio_plugin_abi.h"
 #include "oiio_plugin/plugin_call.h"
@@ -68,6 +72,31 @@ int readOpened(OIIO::ImageInput& in, lensrt_oiio_size_check check, void* context
   return LENSRT_OIIO_OK;
 }
 
+// OpenImageIO 2.4's DPX reader fills the pixels past the end of a cut file
+// with whatever its buffer held, and reports success: the header's file size
+// (big-endian after "SDPX", little after "XPDS") says how long it must be.
+void checkDpxLength(const unsigned char* header, std::size_t headerBytes, std::uint64_t fileBytes) {
+  if (headerBytes < 20) throw Failure("the DPX header is cut short");
+  std::uint32_t declared = 0;
+  for (int i = 0; i < 4; ++i)
+    declared |= std::uint32_t(header[16 + (header[0] == 'S' ? i : 3 - i)]) << (8 * (3 - i));
+  if (fileBytes < declared) {
+    std::string why = "the DPX file is cut short: its header declares ";
+    why += std::to_string(declared);
+    why += " bytes, it holds ";
+    why += std::to_string(fileBytes);
+    throw Failure(why);
+  }
+}
+
+void checkDpxFile(const char* path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char header[20] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  std::error_code ec;
+  checkDpxLength(header, std::size_t(in.gcount()), std::filesystem::file_size(path, ec));
+}
+
 // Alpha as stored: OpenImageIO would premultiply unassociated alpha.
 OIIO::ImageSpec readConfig() {
   OIIO::ImageSpec config;
@@ -88,6 +117,7 @@ int lensrt_oiio_read_file(const char* path, lensrt_oiio_size_check check, void* 
     const OIIO::ImageSpec config = readConfig();
     const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path, &config);
     if (!in) throw Failure(oneLine(OIIO::geterror(), "OpenImageIO does not recognise the file"));
+    if (std::string_view(in->format_name()) == "dpx") checkDpxFile(path);
     return readOpened(*in, check, context, out);
   });
 }
@@ -95,6 +125,8 @@ int lensrt_oiio_read_file(const char* path, lensrt_oiio_size_check check, void* 
 int lensrt_oiio_read_memory(const void* bytes, size_t size, const char* format, lensrt_oiio_size_check check,
                             void* context, lensrt_oiio_image* out) {
   return guarded([&] {
+    if (std::string_view(format) == "dpx")
+      checkDpxLength(static_cast<const unsigned char*>(bytes), size, size);
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create(format);
     if (!in) throw Failure(oneLine(OIIO::geterror(), "OpenImageIO has no reader for it"));
     if (!in->supports("ioproxy"))
