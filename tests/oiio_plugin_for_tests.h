@@ -8,10 +8,16 @@
 
 namespace lensrt::test {
 
+// False when the build made none (built without OpenImageIO): tests of the
+// formats it serves skip then.
+inline bool builtOiioPlugin() {
+  return !std::string_view(LENSRT_OIIO_PLUGIN_FILE).empty();
+}
+
 // Call before the process first needs the plugin; false when the build has
-// none (built without OpenImageIO): skip the test then.
+// none: skip the test then.
 inline bool useBuiltOiioPlugin() {
-  if (std::string_view(LENSRT_OIIO_PLUGIN_FILE).empty()) return false;
+  if (!builtOiioPlugin()) return false;
   ::setenv("LENSRT_OIIO_PLUGIN", LENSRT_OIIO_PLUGIN_FILE, 1);
   return true;
 }

@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "core/oiio_plugin_abi.h"
 #include "oiio_plugin/plugin_call.h"
@@ -72,29 +73,57 @@ int readOpened(OIIO::ImageInput& in, lensrt_oiio_size_check check, void* context
   return LENSRT_OIIO_OK;
 }
 
-// OpenImageIO 2.4's DPX reader fills the pixels past the end of a cut file
-// with whatever its buffer held, and reports success: the header's file size
-// (big-endian after "SDPX", little after "XPDS") says how long it must be.
-void checkDpxLength(const unsigned char* header, std::size_t headerBytes, std::uint64_t fileBytes) {
-  if (headerBytes < 20) throw Failure("the DPX header is cut short");
-  std::uint32_t declared = 0;
-  for (int i = 0; i < 4; ++i)
-    declared |= std::uint32_t(header[16 + (header[0] == 'S' ? i : 3 - i)]) << (8 * (3 - i));
-  if (fileBytes < declared) {
+// OpenImageIO 2.4's DPX reader trusts the header: it allocates the user data
+// size it declares (4 GiB from a 4-byte change, then an assertion aborts the
+// process: found by fuzz_image) and reads a cut file without complaint, the
+// missing pixels uninitialised. So the header's sizes (big-endian after
+// "SDPX", little-endian after "XPDS") must fit the file; all ones is DPX's
+// "undefined".
+constexpr std::size_t kDpxHeaderBytes = 36;
+constexpr std::uint32_t kDpxUndefined = 0xffffffff;
+
+void checkDpxHeader(const unsigned char* header, std::size_t headerBytes, std::uint64_t fileBytes) {
+  if (headerBytes < kDpxHeaderBytes) throw Failure("the DPX header is cut short");
+  const auto field = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for (std::size_t i = 0; i < 4; ++i)
+      v |= std::uint32_t(header[at + (header[0] == 'S' ? i : 3 - i)]) << (8 * (3 - i));
+    return v;
+  };
+  if (const std::uint32_t declared = field(16); fileBytes < declared) {
     std::string why = "the DPX file is cut short: its header declares ";
     why += std::to_string(declared);
     why += " bytes, it holds ";
     why += std::to_string(fileBytes);
     throw Failure(why);
   }
+  for (const auto& [at, what] :
+       {std::pair{std::size_t(4), "image data offset"}, std::pair{std::size_t(32), "user data size"}})
+    if (const std::uint32_t v = field(at); v != kDpxUndefined && v > fileBytes) {
+      std::string why = "the DPX header's ";
+      why += what;
+      why += ", ";
+      why += std::to_string(v);
+      why += ", is beyond the file's ";
+      why += std::to_string(fileBytes);
+      why += " bytes";
+      throw Failure(why);
+    }
 }
 
-void checkDpxFile(const char* path) {
+bool isDpx(const unsigned char* bytes, std::size_t size) {
+  return size >= 4 && (std::memcmp(bytes, "SDPX", 4) == 0 || std::memcmp(bytes, "XPDS", 4) == 0);
+}
+
+// A file's DPX header, checked before OpenImageIO opens it.
+void checkIfDpxFile(const char* path) {
   std::ifstream in(path, std::ios::binary);
-  unsigned char header[20] = {};
+  unsigned char header[kDpxHeaderBytes] = {};
   in.read(reinterpret_cast<char*>(header), sizeof header);
+  const std::size_t got = std::size_t(in.gcount());
+  if (!isDpx(header, got)) return;
   std::error_code ec;
-  checkDpxLength(header, std::size_t(in.gcount()), std::filesystem::file_size(path, ec));
+  checkDpxHeader(header, got, std::filesystem::file_size(path, ec));
 }
 
 // Alpha as stored: OpenImageIO would premultiply unassociated alpha.
@@ -114,10 +143,10 @@ extern "C" {
 int lensrt_oiio_read_file(const char* path, lensrt_oiio_size_check check, void* context,
                           lensrt_oiio_image* out) {
   return guarded([&] {
+    checkIfDpxFile(path);
     const OIIO::ImageSpec config = readConfig();
     const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path, &config);
     if (!in) throw Failure(oneLine(OIIO::geterror(), "OpenImageIO does not recognise the file"));
-    if (std::string_view(in->format_name()) == "dpx") checkDpxFile(path);
     return readOpened(*in, check, context, out);
   });
 }
@@ -126,7 +155,7 @@ int lensrt_oiio_read_memory(const void* bytes, size_t size, const char* format, 
                             void* context, lensrt_oiio_image* out) {
   return guarded([&] {
     if (std::string_view(format) == "dpx")
-      checkDpxLength(static_cast<const unsigned char*>(bytes), size, size);
+      checkDpxHeader(static_cast<const unsigned char*>(bytes), size, size);
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create(format);
     if (!in) throw Failure(oneLine(OIIO::geterror(), "OpenImageIO has no reader for it"));
     if (!in->supports("ioproxy"))
