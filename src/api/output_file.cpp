@@ -77,7 +77,9 @@ std::optional<fs::path> checkOutputFile(const fs::path& out) {
     throw UsageError(
         "-o", (out.extension().empty() ? "'" + out.string() + "' has no image extension"
                                        : "unknown image extension '" + out.extension().string() + "'") +
-                  " (use .exr for the full result, .png or .jpg for a preview)");
+                  " (use .exr for the full result; .png, .jpg, .tif, .jp2 or .webp for a preview, .dpx for "
+                  "10-bit log)");
+  checkImageWriter(out);
   const std::optional<fs::path> created = createFolderFor(out);
   const fs::path dir = directoryOf(out);
   if (!fs::is_directory(dir, ec)) throw InputError(out.string(), dir.string() + " is not a directory");
@@ -88,9 +90,10 @@ std::optional<fs::path> checkOutputFile(const fs::path& out) {
   return created;
 }
 
-void writeOutputImage(const fs::path& out, const Image& image, const ImageMetadata& metadata) {
+void writeOutputImage(const fs::path& out, const Image& image, const ImageMetadata& metadata,
+                      const ImageWriteOptions& options) {
   try {
-    writeImage(out, image, metadata);
+    writeImage(out, image, metadata, options);
   } catch (const InputError& e) {
     // The failed write's temporary file is gone again: judge the space by
     // what the image needs uncompressed.

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "image/image.h"
+#include "image/image_io.h"
 
 namespace lensrt {
 
@@ -32,6 +33,7 @@ inline void noteCreatedFolder(const std::optional<std::filesystem::path>& folder
 }
 
 // writeImage, with a failure reported against `out` (a full disk as such).
-void writeOutputImage(const std::filesystem::path& out, const Image& image, const ImageMetadata& metadata);
+void writeOutputImage(const std::filesystem::path& out, const Image& image, const ImageMetadata& metadata,
+                      const ImageWriteOptions& options = {});
 
 }  // namespace lensrt

@@ -62,7 +62,7 @@ Environment makeEnvironment(const EnvironmentSpec& spec) {
   };
   if (spec.constant) return adjusted(Environment::constant(*spec.constant));
   if (spec.file.empty()) return Environment();
-  const Image map = readImage(spec.file);
+  const Image map = readLinearImage(spec.file);
   try {
     return adjusted(Environment::latLong(map));
   } catch (const std::invalid_argument& e) {

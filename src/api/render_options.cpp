@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "image/image_io.h"
 
 namespace lensrt {
 namespace {
@@ -90,10 +91,11 @@ EnvironmentSpec parseEnvironment(const std::string& text) {
   }
   std::string ext = std::filesystem::path(text).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != ".exr" && ext != ".hdr")
-    throw UsageError(
-        "--env",
-        "expected none, constant:V, constant:R,G,B or a lat-long .exr/.hdr file, got '" + text + "'");
+  if (!isReadableImageExtension(text))
+    throw UsageError("--env",
+                     "expected none, constant:V, constant:R,G,B or a lat-long image file (.exr, .hdr, .tif, "
+                     ".webp, .png, ...), got '" +
+                         text + "'");
   spec.file = text;
   return spec;
 }

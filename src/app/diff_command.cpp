@@ -26,7 +26,9 @@ struct DiffOptions {
 constexpr const char* kDescription =
     "Compare two images, by thresholds as OpenImageIO's idiff does or statistically (--noise-aware)\n"
     "Channel by channel: EXR (through OpenEXR), PNG, JPEG,\n"
-    "Radiance HDR, BMP, TGA, PSD, GIF, PIC or PNM (through stb_image).\n"
+    "Radiance HDR, BMP, TGA, PSD, GIF, PIC or PNM (through stb_image), TIFF, DPX,\n"
+    "JPEG 2000, WebP and the other formats OpenImageIO reads (through lensrt's\n"
+    "OpenImageIO plugin, loaded only for them).\n"
     "Prints per channel and overall: max |A-B| and its pixel, mean |A-B|, RMSE,\n"
     "PSNR (peak 1.0), mean relative error |A-B|/max((|A|+|B|)/2, floor), and the\n"
     "pixels over the fail/warn thresholds. Thresholds and verdicts follow\n"
@@ -168,10 +170,12 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
   sub->add_option(
          "--heatmap", o->comparison.heatmap,
          "Write a false-colour map of the per-pixel max |A-B| (noise-aware: max |t|) with a labelled "
-         "colour bar (.png/.jpg/.exr)")
+         "colour bar (.png/.jpg/.exr, or .tif/.jp2/.webp/.dpx)")
       ->check(CLI::Validator(
           [](std::string& file) {
-            return isWritableImageExtension(file) ? std::string() : "expects a .png, .jpg or .exr file";
+            return isWritableImageExtension(file)
+                       ? std::string()
+                       : "expects a .png, .jpg, .exr, .tif, .jp2, .webp or .dpx file";
           },
           "IMAGE"));
   sub->add_option("--heatmap-max", o->comparison.heatmapMax,

@@ -32,7 +32,8 @@ struct RenderArgs {
   std::string crop;
   std::string tile;
   RawOutputOptions raw;
-  double checkpointSeconds = 0;  // 0: no checkpoints
+  std::string ocioDisplay, ocioView;  // empty: the sRGB curve (both empty) or the config's default
+  double checkpointSeconds = 0;       // 0: no checkpoints
   std::string resume;
   bool quiet = false;
   CameraOptions camera;
@@ -69,6 +70,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   settings.aovs = parseAovs(args.aovs);
   job.output = args.output;
   job.raw = args.raw;
+  if (!args.ocioDisplay.empty() || !args.ocioView.empty())
+    job.display = DisplayTransform{args.ocioDisplay, args.ocioView};
   // The syntax is checked by the flags' validators.
   if (!args.tile.empty()) {
     FileRender::Strip strip;
@@ -98,9 +101,16 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("scene", args->frame.scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
       ->required();
   cmd->add_option("-o,--output", args->output,
-                  "output image: .exr (linear float, all channels and metadata) or .png/.jpg (sRGB preview), "
+                  "output image: .exr (linear float, all channels and metadata), .png/.jpg (8-bit sRGB "
+                  "preview), .tif/.jp2 (16-bit sRGB), .webp (8-bit sRGB) or .dpx (10-bit Cineon log); "
                   "e.g. -o out/a.exr")
       ->required();
+  cmd->add_option(
+      "--ocio-display", args->ocioDisplay,
+      "a preview's OpenColorIO display (the $OCIO config's, through OpenImageIO) instead of the sRGB "
+      "curve, e.g. --ocio-display sRGB (default with --ocio-view: the config's default display)");
+  cmd->add_option("--ocio-view", args->ocioView,
+                  "that display's view, e.g. --ocio-view Film (default: the display's default view)");
   cmd->add_option("--spp", args->spp, "samples per pixel (>= 1), e.g. --spp 64")
       ->check(integerIn(1, 1 << 24, "samples per pixel"))
       ->capture_default_str();

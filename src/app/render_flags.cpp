@@ -21,7 +21,8 @@ void addEnvironmentOptions(CLI::App& cmd, EnvironmentArgs& args) {
   cmd.add_option(
          "--env", args.environment,
          "environment light: constant:V or constant:R,G,B radiance in W/(sr m^2), a lat-long "
-         ".exr/.hdr map (centre = -Z, +Y up), or none (the scene's own light alone), e.g. --env constant:1 "
+         "image (centre = -Z, +Y up: .exr/.hdr as linear light, .png/.jpg/.tif/.webp/... decoded from sRGB, "
+         "log .dpx from Cineon), or none (the scene's own light alone), e.g. --env constant:1 "
          "(default: none when the scene's lights and emissive surfaces light it, else a uniform sky of "
          "radiance 1, with a notice saying why)")
       ->check([](const std::string& s) { return checkEnvironment(s); });

@@ -21,12 +21,12 @@ fs::path checkpointSumsFile(const fs::path& image) {
 }
 
 void writeCheckpoint(const fs::path& image, const FilmState& state, const Image& pixels,
-                     ImageMetadata metadata) {
+                     ImageMetadata metadata, const ImageWriteOptions& options) {
   const std::vector<std::byte> bytes = state.toBytes();
   const std::string_view view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   metadata["lensrt:sums_sha256"] = sha256Hex(view);
   writeTextFileAtomically(checkpointSumsFile(image), std::string(view));
-  writeOutputImage(image, pixels, metadata);
+  writeOutputImage(image, pixels, metadata, options);
 }
 
 FilmState readCheckpoint(const fs::path& image, const ImageMetadata& identity, const PixelRegion& region) {

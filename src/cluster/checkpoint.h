@@ -9,15 +9,17 @@
 #include <filesystem>
 
 #include "image/image.h"
+#include "image/image_io.h"
 #include "render/film_state.h"
 
 namespace lensrt {
 
 std::filesystem::path checkpointSumsFile(const std::filesystem::path& image);
 
-// Writes IMAGE.sums then IMAGE, each atomically. Throws InputError.
+// Writes IMAGE.sums then IMAGE (with `options`, as the finished image would
+// be), each atomically. Throws InputError.
 void writeCheckpoint(const std::filesystem::path& image, const FilmState& state, const Image& pixels,
-                     ImageMetadata metadata);
+                     ImageMetadata metadata, const ImageWriteOptions& options = {});
 
 // The state saved in a checkpoint of the render `identity` describes, over
 // `region`. Throws InputError naming the file and what differs when it is

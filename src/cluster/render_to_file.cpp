@@ -19,6 +19,7 @@
 #include "cluster/distributed_render.h"
 #include "cluster/interrupt.h"
 #include "core/error.h"
+#include "image/image_io.h"
 #include "render/progress.h"
 
 namespace lensrt {
@@ -61,6 +62,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   std::error_code ec;
   if (leader) noteCreatedFolder(checkOutputFile(args.output), args.quiet);
   if (leader) checkRawOutput(args.raw);
+  if (leader && args.display) checkDisplayTransform(args.output, *args.display);
   const bool exr = std::filesystem::path(args.output).extension() == ".exr";
   // A preview's 8 bits mean sRGB; other spaces' numbers would show wrong colours.
   if (!exr && args.camera.outputSpace != "srgb")
@@ -76,6 +78,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
     throw InputError(envFile, "environment map not found");
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile, ec))
     throw InputError(envFile, "the environment map is not a regular file");
+  if (!envFile.empty()) checkImageReader(envFile);  // before the scene loads
 
   // Warnings wait until the scene and camera are set up, so that a run that
   // fails there prints its one error line alone.
@@ -179,11 +182,19 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
 
   // 3. Write: with the running sums when it can be continued.
   {
-    const ImageMetadata metadata = metadataOf(result);
+    ImageMetadata metadata = metadataOf(result);
+    ImageWriteOptions options;
+    options.display = args.display;
+    if (args.display) {
+      std::string shown = args.display->display.empty() ? "(default display)" : args.display->display;
+      shown += " / ";
+      shown += args.display->view.empty() ? "(default view)" : args.display->view;
+      metadata["lensrt:ocio_display_view"] = shown;
+    }
     if (args.checkpointSeconds > 0 || !finished)
-      writeCheckpoint(args.output, state, result.output.image, metadata);
+      writeCheckpoint(args.output, state, result.output.image, metadata, options);
     else
-      writeOutputImage(args.output, result.output.image, metadata);
+      writeOutputImage(args.output, result.output.image, metadata, options);
     if (!args.raw.file.empty() && finished)
       writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera);
   }

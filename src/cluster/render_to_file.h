@@ -12,6 +12,7 @@
 #include "api/raw_output.h"
 #include "api/render_job.h"
 #include "cluster/cluster.h"
+#include "image/preview_values.h"
 #include "render/pixel_region.h"
 #include "render/renderer.h"
 
@@ -21,8 +22,10 @@ struct FileRender {
   SceneOptions scene;       // the scene file and the frame
   CameraOptions camera;     // the model and its optics, and the sensor
   RenderSettings settings;  // spp, seed, threads, tile size, AOVs; the region comes from tile/crop
-  std::string output;       // -o: .exr (continuable) or .png/.jpg
-  RawOutputOptions raw;     // --raw and --cfa
+  std::string output;       // -o: .exr (continuable) or a preview (.png, .jpg, .tif, ...), .dpx
+  // --ocio-display/--ocio-view: the previews' OpenColorIO display transform.
+  std::optional<DisplayTransform> display;
+  RawOutputOptions raw;  // --raw and --cfa
   // --tile I/N (strips top to bottom) or --crop X0,X1,Y0,Y1: the part of the frame.
   struct Strip {
     int index = 0, count = 1;

@@ -15,7 +15,12 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/oiio_plugin.h"
+#include "core/plugin_image_formats.h"
+#include "image/cineon.h"
 #include "image/exr_io.h"
+#include "image/plugin_input.h"
+#include "image/plugin_output.h"
 #include "image/srgb.h"
 #include "image/stb_io.h"
 
@@ -24,7 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-enum class FileKind { Exr, Png, Jpeg, Unknown };
+// Written by lensrt's own encoders, or through the OpenImageIO plugin.
+enum class FileKind { Exr, Png, Jpeg, Plugin, Unknown };
 
 std::string lowerExtension(const fs::path& file) {
   std::string ext = file.extension().string();
@@ -37,6 +43,7 @@ FileKind kindOf(const fs::path& file) {
   if (ext == ".exr") return FileKind::Exr;
   if (ext == ".png") return FileKind::Png;
   if (ext == ".jpg" || ext == ".jpeg") return FileKind::Jpeg;
+  if (pluginOutputFor(file)) return FileKind::Plugin;
   return FileKind::Unknown;
 }
 
@@ -89,14 +96,14 @@ class TemporaryFile {
   fs::path path_;
 };
 
-// The 8-bit preview's R,G,B source channels: R,G,B by name, else a single
-// channel shown as grey, else the first three.
-std::vector<int> previewChannels(const Image& image) {
+// A preview's R,G,B source channels: R,G,B by name, else a single channel
+// shown as grey, else the first three.
+std::vector<int> previewChannels(const fs::path& file, const Image& image) {
   const int r = image.channelIndex("R"), g = image.channelIndex("G"), b = image.channelIndex("B");
   if (r >= 0 && g >= 0 && b >= 0) return {r, g, b};
   if (image.channelCount() == 1) return {0, 0, 0};
   if (image.channelCount() >= 3) return {0, 1, 2};
-  return {};
+  throw InputError(file.string(), "a preview needs R,G,B channels, a single channel or three");
 }
 
 // The file's bytes, encoded in memory so that writing them is one checked
@@ -104,14 +111,9 @@ std::vector<int> previewChannels(const Image& image) {
 std::string encode(const fs::path& file, FileKind kind, const Image& image, const ImageMetadata& metadata,
                    const ImageWriteOptions& options) {
   if (kind == FileKind::Exr) return encodeExr(file.string(), image, metadata, options.halfFloat);
-  const std::vector<int> source = previewChannels(image);
-  if (source.empty())
-    throw InputError(file.string(), "a .png/.jpg preview needs R,G,B channels, a single channel or three");
-  const std::size_t pixelCount = std::size_t(image.width) * image.height;
-  std::string rgb(pixelCount * 3, '\0');
-  for (std::size_t i = 0; i < pixelCount; ++i)
-    for (int c = 0; c < 3; ++c)
-      rgb[i * 3 + c] = char(srgbEncode8(image.pixels[i * image.channelCount() + source[c]]));
+  const std::vector<float> values = previewValues(file, image, previewChannels(file, image), options.display);
+  std::string rgb(values.size(), '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) rgb[i] = char(std::lround(values[i] * 255.0f));
   return encodePreview(file.string(), kind == FileKind::Png ? PreviewFormat::Png : PreviewFormat::Jpeg,
                        image.width, image.height, rgb, metadata);
 }
@@ -156,12 +158,18 @@ bool isWritableImageExtension(const fs::path& file) {
   return kindOf(file) != FileKind::Unknown;
 }
 
+bool isReadableImageExtension(const fs::path& file) {
+  const std::string ext = lowerExtension(file);
+  return ext == ".exr" || ext == ".hdr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg" ||
+         isPluginInputExtension(file);
+}
+
 void writeImage(const fs::path& file, const Image& image, const ImageMetadata& metadata,
                 const ImageWriteOptions& options) {
   const FileKind kind = kindOf(file);
   if (kind == FileKind::Unknown)
-    throw InputError(file.string(),
-                     "unknown image extension '" + file.extension().string() + "' (use .exr, .png or .jpg)");
+    throw InputError(file.string(), "unknown image extension '" + file.extension().string() +
+                                        "' (use .exr, .png, .jpg, .tif, .dpx, .jp2 or .webp)");
   if (image.width <= 0 || image.height <= 0 || image.channels.empty() ||
       image.pixels.size() != std::size_t(image.width) * image.height * image.channelCount())
     throw InputError(file.string(), "cannot write an empty or inconsistent image (" +
@@ -174,6 +182,13 @@ void writeImage(const fs::path& file, const Image& image, const ImageMetadata& m
     throw InputError(file.string(), "directory does not exist: " + dir.string());
   if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
 
+  if (kind == FileKind::Plugin) {
+    const std::vector<int> source = previewChannels(file, image);
+    writeFileThrough(file, [&](const fs::path& tmp) {
+      writeWithPlugin(file, tmp, *pluginOutputFor(file), image, source, metadata, options.display);
+    });
+    return;
+  }
   const std::string bytes = encode(file, kind, image, metadata, options);
   TemporaryFile tmp(createTemporaryBeside(file));
   writeBytes(file, tmp.path(), bytes);
@@ -185,7 +200,8 @@ void writeImage(const fs::path& file, const Image& image, const ImageMetadata& m
 void writeFileThrough(const fs::path& file, const std::function<void(const fs::path&)>& write) {
   const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(file.string(), "directory does not exist: " + dir.string());
+  if (!fs::is_directory(dir, ec))
+    throw InputError(file.string(), "directory does not exist: " + dir.string());
   if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
   TemporaryFile tmp(createTemporaryBeside(file));
   write(tmp.path());
@@ -194,20 +210,104 @@ void writeFileThrough(const fs::path& file, const std::function<void(const fs::p
   tmp.release();
 }
 
-Image readImage(const fs::path& file, ImageMetadata* metadata) {
+void checkDisplayTransform(const fs::path& file, const DisplayTransform& display) {
+  const FileKind kind = kindOf(file);
+  if (kind == FileKind::Exr || kind == FileKind::Unknown || pluginOutputFor(file) == PluginOutput::Dpx) {
+    std::string why = "applies to previews (.png, .jpg, .tif, .jp2, .webp), not ";
+    why += file.extension().string();
+    why += " files (scene-linear or log)";
+    throw UsageError("--ocio-display", why);
+  }
+  Image probe(1, 1, {"R", "G", "B"});
+  previewValues(file, probe, {0, 1, 2}, display);
+}
+
+void checkImageWriter(const fs::path& file) {
+  if (const std::optional<PluginOutput> format = pluginOutputFor(file)) {
+    std::string purpose = "writing ";
+    purpose += pluginOutputLabel(*format);
+    purpose += " files";
+    OiioPlugin::get(file.string(), purpose);
+  }
+}
+
+namespace {
+
+std::optional<PluginFormat> sniffedPluginFormat(std::string_view bytes) {
+  return sniffPluginFormat(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+}
+
+// Radiance files hold linear light; stb_image's other formats sRGB codes.
+bool looksLikeRadiance(std::string_view bytes) {
+  return bytes.rfind("#?RADIANCE", 0) == 0 || bytes.rfind("#?RGBE", 0) == 0;
+}
+
+// The label of the format a file's extension names, for the plugin's
+// messages: ".cin images".
+std::string extensionLabel(const fs::path& file) {
+  std::string label = file.extension().string();
+  return label.empty() ? "these" : label;
+}
+
+EncodedImage readEncoded(const fs::path& file, ImageMetadata* metadata) {
   std::error_code ec;
   if (!fs::exists(file, ec)) throw InputError(file.string(), "no such file");
   if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
   if (metadata) metadata->clear();
+  const std::string head = readHead(file, 64);
   // EXR files are read through OpenEXR's own stream: renders can be large.
-  if (looksLikeExr(readHead(file, 4))) return readExrFile(file, metadata, kMaxImageValues);
-  return decodeStbImage(readAll(file), file.string(), kMaxImageValues);
+  if (looksLikeExr(head)) return {readExrFile(file, metadata, kMaxImageValues), StoredEncoding::Linear};
+  if (const std::optional<PluginFormat> format = sniffedPluginFormat(head))
+    return readWithPlugin(file, format->label, kMaxImageValues);
+  const std::string bytes = readAll(file);
+  if (!isStbImage(bytes) && isPluginInputExtension(file))
+    return readWithPlugin(file, extensionLabel(file), kMaxImageValues);
+  const StoredEncoding encoding = looksLikeRadiance(bytes) ? StoredEncoding::Linear : StoredEncoding::Srgb;
+  return {decodeStbImage(bytes, file.string(), kMaxImageValues), encoding};
+}
+
+bool isAlpha(const std::string& channel) {
+  return channel == "A" || (channel.size() > 2 && channel.compare(channel.size() - 2, 2, ".A") == 0);
+}
+
+}  // namespace
+
+Image readImage(const fs::path& file, ImageMetadata* metadata) {
+  return readEncoded(file, metadata).image;
+}
+
+void checkImageReader(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return;  // the read says what is wrong
+  if (const std::optional<PluginFormat> format = sniffedPluginFormat(readHead(file, 64))) {
+    std::string purpose = "reading ";
+    purpose += format->label;
+    purpose += " images";
+    OiioPlugin::get(file.string(), purpose);
+  }
+}
+
+Image readLinearImage(const fs::path& file) {
+  EncodedImage read = readEncoded(file, nullptr);
+  if (read.encoding == StoredEncoding::Linear) return std::move(read.image);
+  Image& image = read.image;
+  const std::size_t channels = image.channelCount();
+  for (std::size_t c = 0; c < channels; ++c) {
+    if (isAlpha(image.channels[c])) continue;
+    for (std::size_t i = c; i < image.pixels.size(); i += channels)
+      image.pixels[i] = read.encoding == StoredEncoding::Cineon
+                            ? cineonDecode(image.pixels[i] * cineon::kMaxCode)
+                            : srgbDecode(image.pixels[i]);
+  }
+  return std::move(image);
 }
 
 Image decodeImage(std::string_view bytes, const std::string& name, ImageMetadata* metadata,
                   std::size_t maxValues) {
   if (metadata) metadata->clear();
   if (looksLikeExr(bytes)) return decodeExr(bytes, name, metadata, maxValues);
+  if (const std::optional<PluginFormat> format = sniffedPluginFormat(bytes))
+    return decodeWithPlugin(bytes, *format, name, maxValues).image;
   return decodeStbImage(bytes, name, maxValues);
 }
 

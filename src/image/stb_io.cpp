@@ -148,6 +148,13 @@ void checkRadianceRunLengths(std::string_view bytes, const std::string& name) {
   }
 }
 
+bool isStbImage(std::string_view bytes) {
+  int width = 0, height = 0, channels = 0;
+  return bytes.size() <= std::size_t(INT_MAX) &&
+         stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &width,
+                               &height, &channels);
+}
+
 Image decodeStbImage(std::string_view bytes, const std::string& name, std::size_t maxValues) {
   if (bytes.size() > std::size_t(INT_MAX)) throw InputError(name, "the image file is larger than 2 GiB");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());

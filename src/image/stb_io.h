@@ -26,4 +26,7 @@ std::string encodePreview(const std::string& name, PreviewFormat format, int wid
 // `maxValues` values are refused before decoding. Throws InputError.
 Image decodeStbImage(std::string_view bytes, const std::string& name, std::size_t maxValues);
 
+// True when stb_image recognises `bytes` as one of its formats.
+bool isStbImage(std::string_view bytes);
+
 }  // namespace lensrt

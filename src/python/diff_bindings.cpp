@@ -65,7 +65,7 @@ py::object diff(py::handle a, py::handle b, py::handle fail, py::handle failRela
   if (!heatmap.is_none()) {
     o.heatmap = toPathText(heatmap, "heatmap");
     if (!isWritableImageExtension(o.heatmap))
-      throw UsageError("--heatmap", "expects a .png, .jpg or .exr file");
+      throw UsageError("--heatmap", "expects a .png, .jpg, .exr, .tif, .jp2, .webp or .dpx file");
     createFolderFor(o.heatmap);
   }
   o.heatmapMax = threshold(heatmapMax, "heatmap_max", 0, kHuge, 0.0);

@@ -332,8 +332,9 @@ void bindScene(py::module_& m) {
             writeOutputImage(file, r.result.image, r.result.metadata);
           },
           arg("path"),
-          "Writes the image as `lensrt render -o` would: .exr (every channel, float, with the metadata) or\n"
-          ".png/.jpg (an sRGB preview). Missing folders are created.")
+          "Writes the image as `lensrt render -o` would: .exr (every channel, float, with the metadata),\n"
+          ".png/.jpg (an sRGB preview), .tif/.jp2/.webp/.dpx (through lensrt's OpenImageIO plugin, found\n"
+          "in the package folder). Missing folders are created.")
       .def("__repr__", [](const PyRenderResult& r) {
         return fmt::format("<lensrt.RenderResult {}x{}, {} spp, {}>", r.result.image.width,
                            r.result.image.height, r.result.samplesPerPixel, r.result.camera);

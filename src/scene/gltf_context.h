@@ -27,7 +27,8 @@ struct Context {
 
 // The extensions the loader implements (KHR_mesh_quantization needs nothing
 // beyond the accessor reader's integer formats; KHR_xmp and KHR_xmp_json_ld are
-// metadata that cannot change the picture).
+// metadata that cannot change the picture; EXT_texture_webp's images need the
+// OpenImageIO plugin, an error when it is missing and no fallback image is given).
 inline bool isSupportedExtension(std::string_view name) {
   return name == "KHR_lights_punctual" || name == "KHR_materials_emissive_strength" ||
          name == "EXT_mesh_gpu_instancing" || name == "KHR_mesh_quantization" ||
@@ -35,7 +36,7 @@ inline bool isSupportedExtension(std::string_view name) {
          name == "KHR_materials_ior" || name == "KHR_materials_specular" ||
          name == "KHR_materials_transmission" || name == "KHR_materials_volume" ||
          name == "KHR_materials_clearcoat" || name == "KHR_materials_sheen" ||
-         name == "KHR_materials_dispersion";
+         name == "KHR_materials_dispersion" || name == "EXT_texture_webp";
 }
 
 }  // namespace lensrt::gltf

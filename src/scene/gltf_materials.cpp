@@ -7,10 +7,14 @@
 #include <map>
 #include <optional>
 #include <utility>
+#include <variant>
+#include <vector>
 
 #include "core/constants.h"
 #include "core/png_allocation.h"
+#include "scene/data_uri.h"
 #include "scene/gltf_values.h"
+#include "scene/texture_decoding.h"
 
 namespace lensrt::gltf {
 namespace {
@@ -31,37 +35,13 @@ std::string bytesText(std::uint64_t bytes) {
   return std::to_string((bytes + kMiB - 1) / kMiB) + " MiB";
 }
 
-// Width and height a PNG or JPEG header declares, read before decoding
-// allocates for them; nullopt for other formats or broken headers (the
-// decoder then reports those).
-std::optional<std::pair<std::uint32_t, std::uint32_t>> declaredSize(const unsigned char* b, std::size_t n) {
-  if (const auto png = pngDeclaredSize(b, n)) return png;
-  if (n < 4 || b[0] != 0xFF || b[1] != 0xD8) return std::nullopt;
-  // JPEG: walk the segments to the first start-of-frame marker.
-  std::size_t at = 2;
-  while (at + 9 < n) {
-    if (b[at] != 0xFF) return std::nullopt;
-    const unsigned char marker = b[at + 1];
-    const std::size_t length = (std::size_t{b[at + 2]} << 8) | b[at + 3];
-    const bool sof = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
-    if (sof)
-      return std::pair{std::uint32_t((b[at + 7] << 8) | b[at + 8]),
-                       std::uint32_t((b[at + 5] << 8) | b[at + 6])};
-    if (length < 2) return std::nullopt;
-    at += 2 + length;
-  }
-  return std::nullopt;
+// "#3": an unnamed material or image. Appended, not "#" + std::string:
+// GCC 12 warns falsely about that once inlined (bug 105329).
+std::string indexName(std::size_t index) {
+  std::string name = "#";
+  name += std::to_string(index);
+  return name;
 }
-
-float srgbToLinear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-// Decoded pixels as tinygltf's stb_image wrapper returns them (RGBA, 8 or 16 bit).
-struct Pixels {
-  int width = 0, height = 0, components = 0, bits = 8;
-  std::vector<unsigned char> data;
-};
 
 class TextureLoader {
  public:
@@ -105,28 +85,67 @@ class TextureLoader {
       return std::nullopt;
     }
     const tinygltf::Texture& gt = textures[static_cast<std::size_t>(textureIndex)];
-    for (const auto& [name, value] : gt.extensions) ctx_.warnUnsupportedExtension(name);
-    const auto& images = ctx_.model.images;
-    if (gt.source < 0 || static_cast<std::size_t>(gt.source) >= images.size()) {
+    for (const auto& [name, value] : gt.extensions)
+      if (name != "EXT_texture_webp") ctx_.warnUnsupportedExtension(name);
+    // EXT_texture_webp: its WebP image first, then `source`, the fallback
+    // for viewers without WebP.
+    std::vector<int> sources;
+    if (const std::optional<int> webp = webpSource(gt, textureIndex)) sources.push_back(*webp);
+    if (gt.source >= 0 && static_cast<std::size_t>(gt.source) < ctx_.model.images.size() &&
+        (sources.empty() || sources.front() != gt.source))
+      sources.push_back(gt.source);
+    if (sources.empty()) {
       ctx_.warnings.warn(where + ": texture " + std::to_string(textureIndex) +
                          " has no usable image; using the factor only");
       return std::nullopt;
     }
-    const tinygltf::Image& image = images[static_cast<std::size_t>(gt.source)];
-    const std::string imageName = !image.uri.empty() && image.uri.rfind("data:", 0) != 0
-                                      ? image.uri
-                                      : (image.name.empty() ? "#" + std::to_string(gt.source) : image.name);
-    std::string why;
-    const std::optional<Pixels> pixels = decode(image, imageName, why);
-    if (!pixels) {
-      ctx_.warnings.warn("texture image '" + imageName + "' " + why + "; using the material factor only");
-      return std::nullopt;
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      const int source = sources[i];
+      const std::string imageName = nameOf(source);
+      std::variant<Texture, TextureDecodeFailure> decoded = decode(imageName, source, srgb);
+      if (Texture* tex = std::get_if<Texture>(&decoded)) {
+        textureBytes_ += texelBytes(tex->width, tex->height);
+        tex->name = imageName;
+        applySampler(gt.sampler, *tex);
+        return std::move(*tex);
+      }
+      const TextureDecodeFailure& failure = std::get<TextureDecodeFailure>(decoded);
+      const bool fallback = i + 1 < sources.size();
+      if (!failure.pluginProblem.empty()) {
+        // An installation problem, not the file's: an error unless the file
+        // gives another image.
+        const std::string needs = "texture image '" + imageName + "' (" + failure.pluginLabel +
+                                  ") needs lensrt's OpenImageIO plugin: " + failure.pluginProblem;
+        if (!fallback) ctx_.fail(needs);
+        ctx_.warnings.warn(needs + "; using its fallback '" + nameOf(sources[i + 1]) + "'");
+      } else if (fallback) {
+        ctx_.warnings.warn("texture image '" + imageName + "' " + failure.why + "; using its fallback '" +
+                           nameOf(sources[i + 1]) + "'");
+      } else {
+        ctx_.warnings.warn("texture image '" + imageName + "' " + failure.why +
+                           "; using the material factor only");
+      }
     }
-    Texture tex = toTexture(*pixels, srgb);
-    textureBytes_ += texelBytes(tex.width, tex.height);
-    tex.name = imageName;
-    applySampler(gt.sampler, tex);
-    return tex;
+    return std::nullopt;
+  }
+
+  // The image EXT_texture_webp names, if the texture has the extension and
+  // it names an image (else a warning).
+  std::optional<int> webpSource(const tinygltf::Texture& gt, int textureIndex) const {
+    const tinygltf::Value* ext = extension(gt.extensions, "EXT_texture_webp");
+    if (!ext) return std::nullopt;
+    const std::optional<double> source = ext->IsObject() ? numberMember(*ext, "source") : std::nullopt;
+    if (source && isIndex(*source) && *source < double(ctx_.model.images.size())) return int(*source);
+    ctx_.warnings.warn("texture " + std::to_string(textureIndex) +
+                       ": EXT_texture_webp has no valid image source; ignored");
+    return std::nullopt;
+  }
+
+  // An image's name for messages: its URI, else its name, else its index.
+  std::string nameOf(int source) const {
+    const tinygltf::Image& image = ctx_.model.images[static_cast<std::size_t>(source)];
+    if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0) return image.uri;
+    return image.name.empty() ? indexName(std::size_t(source)) : image.name;
   }
 
   // The texture limits, before decoding allocates for what the header
@@ -145,92 +164,46 @@ class TextureLoader {
                 bytesText(ctx_.limits.maxTextureBytes) + " --max-texture-memory allows");
   }
 
-  std::optional<Pixels> decode(const tinygltf::Image& image, const std::string& imageName,
-                               std::string& why) const {
+  std::variant<Texture, TextureDecodeFailure> decode(const std::string& imageName, int source,
+                                                     bool srgb) const {
+    const tinygltf::Image& image = ctx_.model.images[static_cast<std::size_t>(source)];
     const unsigned char* bytes = nullptr;
     std::size_t size = 0;
+    std::optional<std::string> dataUriBytes;
     if (image.as_is && !image.image.empty()) {
       bytes = image.image.data();
       size = image.image.size();
+    } else if (image.uri.starts_with("data:")) {
+      // A media type tinygltf does not decode (image/webp, image/tiff): the
+      // loader checked its size against the data: URI limit.
+      dataUriBytes = decodeBase64DataUri(image.uri);
+      if (!dataUriBytes) return TextureDecodeFailure{"is a data: URI without base64 data", "", ""};
+      bytes = reinterpret_cast<const unsigned char*>(dataUriBytes->data());
+      size = dataUriBytes->size();
     } else if (image.bufferView >= 0) {
       const auto& views = ctx_.model.bufferViews;
-      if (static_cast<std::size_t>(image.bufferView) >= views.size()) {
-        why = "refers to a missing bufferView";
-        return std::nullopt;
-      }
+      if (static_cast<std::size_t>(image.bufferView) >= views.size())
+        return TextureDecodeFailure{"refers to a missing bufferView", "", ""};
       const tinygltf::BufferView& view = views[static_cast<std::size_t>(image.bufferView)];
-      if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= ctx_.model.buffers.size()) {
-        why = "refers to a missing buffer";
-        return std::nullopt;
-      }
+      if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= ctx_.model.buffers.size())
+        return TextureDecodeFailure{"refers to a missing buffer", "", ""};
       const auto& data = ctx_.model.buffers[static_cast<std::size_t>(view.buffer)].data;
-      if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
-        why = "lies outside its buffer";
-        return std::nullopt;
-      }
+      if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+        return TextureDecodeFailure{"lies outside its buffer", "", ""};
       bytes = data.data() + view.byteOffset;
       size = view.byteLength;
     } else {
-      why = "could not be read";
-      return std::nullopt;
+      return TextureDecodeFailure{"could not be read", "", ""};
     }
-    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-      why = "is empty or too large";
-      return std::nullopt;
-    }
-    if (const std::optional<std::pair<std::uint32_t, std::uint32_t>> dims = declaredSize(bytes, size))
+    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      return TextureDecodeFailure{"is empty or too large", "", ""};
+    if (const std::optional<std::pair<std::uint32_t, std::uint32_t>> dims = declaredTextureSize(bytes, size))
       checkLimits(imageName, dims->first, dims->second, "declares");
     if (const std::optional<std::string> bomb = pngAllocationProblem(bytes, size))
       ctx_.fail("texture image '" + imageName + "': " + *bomb);
-    tinygltf::Image decoded;
-    std::string err, warn;
-    // nullptr options: tinygltf's default, which expands to 4 channels.
-    if (!tinygltf::LoadImageData(&decoded, 0, &err, &warn, 0, 0, bytes, static_cast<int>(size), nullptr)) {
-      why = "could not be decoded";
-      return std::nullopt;
-    }
-    Pixels p{decoded.width, decoded.height, decoded.component, decoded.bits, std::move(decoded.image)};
-    const std::size_t bytesPerChannel = p.bits == 16 ? 2 : 1;
-    if (p.width <= 0 || p.height <= 0 || p.components < 1 || p.components > 4 ||
-        (p.bits != 8 && p.bits != 16) ||
-        p.data.size() < static_cast<std::size_t>(p.width) * static_cast<std::size_t>(p.height) *
-                            static_cast<std::size_t>(p.components) * bytesPerChannel) {
-      why = "decoded to an unexpected pixel format";
-      return std::nullopt;
-    }
-    checkLimits(imageName, std::uint32_t(p.width), std::uint32_t(p.height), "has");
-    return p;
-  }
-
-  static Texture toTexture(const Pixels& p, bool srgb) {
-    // 8-bit colour goes through a table: decoding is per texel, pow is slow.
-    std::array<float, 256> table{};
-    for (int i = 0; i < 256; ++i) table[i] = srgb ? srgbToLinear(i / 255.0f) : i / 255.0f;
-    const auto channel = [&](std::size_t at, bool colour) {
-      if (p.bits == 16) {
-        const float v = (p.data[2 * at] | (p.data[2 * at + 1] << 8)) / 65535.0f;
-        return colour && srgb ? srgbToLinear(v) : v;
-      }
-      return colour ? table[p.data[at]] : p.data[at] / 255.0f;
-    };
-    Texture t;
-    t.width = p.width;
-    t.height = p.height;
-    const std::size_t n = static_cast<std::size_t>(p.width) * static_cast<std::size_t>(p.height);
-    const auto c = static_cast<std::size_t>(p.components);
-    t.texels.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t at = i * c;
-      Vec4f& out = t.texels[i];
-      if (c >= 3) {
-        out = {channel(at, true), channel(at + 1, true), channel(at + 2, true),
-               c == 4 ? channel(at + 3, false) : 1};
-      } else {  // grey, grey + alpha
-        const float g = channel(at, true);
-        out = {g, g, g, c == 2 ? channel(at + 1, false) : 1};
-      }
-    }
-    return t;
+    return decodeTextureImage(bytes, size, srgb, [&](std::uint32_t width, std::uint32_t height) {
+      checkLimits(imageName, width, height, "has");
+    });
   }
 
   // KHR_texture_transform: offset, rotation (radians, counter-clockwise in
@@ -458,7 +431,7 @@ void loadMaterials(const Context& ctx, SceneDesc& desc) {
     const tinygltf::Material& gm = ctx.model.materials[i];
     const tinygltf::PbrMetallicRoughness& pbr = gm.pbrMetallicRoughness;
     Material m;
-    m.name = gm.name.empty() ? "#" + std::to_string(i) : gm.name;
+    m.name = gm.name.empty() ? indexName(i) : gm.name;
     if (pbr.baseColorFactor.size() == 4)
       m.baseColor = {finiteOr(pbr.baseColorFactor[0], 1), finiteOr(pbr.baseColorFactor[1], 1),
                      finiteOr(pbr.baseColorFactor[2], 1), finiteOr(pbr.baseColorFactor[3], 1)};

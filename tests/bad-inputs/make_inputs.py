@@ -251,3 +251,19 @@ for w, h in [(60000, 60000), (512, 512)]:
         f.write(png_header(w, h))
 write("texture-60000x60000.gltf", textured({"uri": "header-only-60000x60000.png"}))
 write("texture-512x512.gltf", textured({"uri": "header-only-512x512.png"}))
+
+
+# EXT_texture_webp: a file that starts as WebP (RIFF, WEBP, a VP8 chunk) and
+# holds noise, so it is sent to the OpenImageIO plugin and never decodes.
+with open(os.path.join(HERE, "corrupt.webp"), "wb") as f:
+    f.write(b"RIFF" + struct.pack("<I", 24) + b"WEBPVP8 " + struct.pack("<I", 12) + bytes(range(1, 10)) +
+            b"\x9d\x01\x2a")
+d = textured({"uri": "corrupt.webp"})
+d["extensionsUsed"] = ["EXT_texture_webp"]
+d["textures"] = [{"extensions": {"EXT_texture_webp": {"source": 0}}}]
+write("texture-webp-corrupt.gltf", d)
+d = textured({"uri": "data:image/png;base64," + PNG_2x1})
+d["extensionsUsed"] = ["EXT_texture_webp"]
+d["images"].append({"uri": "corrupt.webp"})
+d["textures"] = [{"source": 0, "extensions": {"EXT_texture_webp": {"source": 1}}}]
+write("texture-webp-with-png-fallback.gltf", d)

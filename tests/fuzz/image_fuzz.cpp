@@ -1,5 +1,7 @@
 // libFuzzer target for the image readers (`lensrt diff`, `--env`, merge,
-// resume): bytes through decodeImage, i.e. OpenEXR for EXR files and
+// resume): bytes through decodeImage, i.e. OpenEXR for EXR files, the
+// OpenImageIO plugin for WebP, TIFF, JPEG 2000 and DPX (when
+// LENSRT_OIIO_PLUGIN names one: else those are an InputError), and
 // stb_image for PNG, JPEG, HDR and the rest. Only InputError may escape; a
 // decoded image must be consistent, and a small one must survive a float EXR
 // round trip bit for bit.

@@ -107,7 +107,9 @@ TEST(ImageIo, HalfExrRoundsToElevenSignificantBits) {
   Image original = test::constantImage(2, 1, {"R", "G", "B"}, 0.0f);
   original.at(0, 0, 0) = 1.0f + 1.0f / 4096.0f;  // below half's 2^-10 step: rounds to 1
   original.at(1, 0, 1) = 1000.0f;                // exactly representable
-  writeImage(dir / "h.exr", original, {}, ImageWriteOptions{.halfFloat = true});
+  ImageWriteOptions half;
+  half.halfFloat = true;
+  writeImage(dir / "h.exr", original, {}, half);
   const Image image = readImage(dir / "h.exr");
   EXPECT_EQ(image.at(0, 0, image.channelIndex("R")), 1.0f);
   EXPECT_EQ(image.at(1, 0, image.channelIndex("G")), 1000.0f);
@@ -343,7 +345,11 @@ TEST(ImageIo, RadianceRunLengthScanlines) {
 TEST(ImageIo, WritableExtensions) {
   EXPECT_TRUE(isWritableImageExtension("a.EXR"));
   EXPECT_TRUE(isWritableImageExtension("dir/a.jpeg"));
-  EXPECT_FALSE(isWritableImageExtension("a.tiff"));
+  EXPECT_TRUE(isWritableImageExtension("a.tiff"));
+  EXPECT_TRUE(isWritableImageExtension("a.DPX"));
+  EXPECT_TRUE(isWritableImageExtension("a.jp2"));
+  EXPECT_TRUE(isWritableImageExtension("a.webp"));
+  EXPECT_FALSE(isWritableImageExtension("a.tga"));
   EXPECT_FALSE(isWritableImageExtension("a"));
 }
 

@@ -229,3 +229,12 @@ def test_raw_writes_the_mosaic_as_a_dng(dof, tmp_path):
     assert blue.to_bytes(2, "little") in data
     with pytest.raises(ValueError, match="--cfa: expected RGGB, BGGR, GRBG or GBRG, got 'RGBG'"):
         dof.render(res=(8, 8), spp=1, raw=out, cfa="RGBG")
+
+
+@pytest.mark.parametrize("name", ["py.tif", "py.dpx", "py.jp2", "py.webp"])
+def test_write_goes_through_the_plugin_beside_the_module(dof, cli, tmp_path, name):
+    # The OpenImageIO plugin, found beside the module: the file is the command's.
+    out = tmp_path / ("cli" + pathlib.Path(name).suffix)
+    cli("render", DOF, "--res", "48x32", "--spp", "2", "--seed", "3", "-q", "-o", out)
+    dof.render(res=(48, 32), spp=2, seed=3).write(tmp_path / name)
+    assert lensrt.diff(out, tmp_path / name, fail=0)["overall"]["maxError"] == 0.0

@@ -113,6 +113,13 @@ TEST_P(BadInputs, OneClearLineRightStatusNoHangOutputUntouched) {
   }
   std::vector<std::string> args{LENSRT_BINARY};
   for (const std::string a : c.at("args")) args.push_back(expand(a, tmp.path()));
+  if (c.contains("env")) {  // run through env(1) with these variables set
+    std::vector<std::string> withEnv{"env"};
+    for (const auto& [name, value] : c["env"].items())
+      withEnv.push_back(name + "=" + expand(value, tmp.path()));
+    withEnv.insert(withEnv.end(), args.begin(), args.end());
+    args = withEnv;
+  }
 
   // Cases that need an unwritable or full directory get it from a private
   // mount namespace; the output directory is then `target`.

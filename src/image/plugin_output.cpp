@@ -1,0 +1,106 @@
+#include "image/plugin_output.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.h"
+#include "core/oiio_plugin.h"
+#include "image/cineon.h"
+
+namespace lensrt {
+namespace {
+
+struct OutputEncoding {
+  const char* label;
+  const char* format;  // OpenImageIO's name
+  int bits;
+  int quality;  // 0: lossless
+  bool cineonLog;
+};
+
+OutputEncoding encodingOf(PluginOutput format) {
+  switch (format) {
+    case PluginOutput::Tiff:
+      return {"TIFF", "tiff", 16, 0, false};
+    case PluginOutput::Jpeg2000:
+      return {"JPEG 2000", "jpeg2000", 16, 0, false};
+    case PluginOutput::WebP:
+      return {"WebP", "webp", 8, 95, false};
+    case PluginOutput::Dpx:
+      return {"DPX", "dpx", 10, 0, true};
+  }
+  return {"", "", 8, 0, false};
+}
+
+std::string lowerExtension(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// The metadata as lines of "key: value", the text TIFF's ImageDescription
+// holds.
+std::string description(const ImageMetadata& metadata) {
+  std::string text;
+  for (const auto& [key, value] : metadata) {
+    if (!text.empty()) text += '\n';
+    text += key;
+    text += ": ";
+    text += value;
+  }
+  return text;
+}
+
+}  // namespace
+
+std::optional<PluginOutput> pluginOutputFor(const std::filesystem::path& file) {
+  const std::string ext = lowerExtension(file);
+  if (ext == ".tif" || ext == ".tiff") return PluginOutput::Tiff;
+  if (ext == ".jp2" || ext == ".j2k") return PluginOutput::Jpeg2000;
+  if (ext == ".webp") return PluginOutput::WebP;
+  if (ext == ".dpx") return PluginOutput::Dpx;
+  return std::nullopt;
+}
+
+const char* pluginOutputLabel(PluginOutput format) {
+  return encodingOf(format).label;
+}
+
+void writeWithPlugin(const std::filesystem::path& file, const std::filesystem::path& temporary,
+                     PluginOutput format, const Image& image, const std::vector<int>& rgb,
+                     const ImageMetadata& metadata, const std::optional<DisplayTransform>& display) {
+  const OutputEncoding e = encodingOf(format);
+  std::string purpose = "writing ";
+  purpose += e.label;
+  purpose += " files";
+  const OiioPlugin& plugin = OiioPlugin::get(file.string(), purpose);
+  std::vector<float> values;
+  if (e.cineonLog) {
+    const std::size_t pixelCount = std::size_t(image.width) * std::size_t(image.height);
+    values.resize(pixelCount * 3);
+    for (std::size_t i = 0; i < pixelCount; ++i)
+      for (std::size_t c = 0; c < 3; ++c)
+        values[i * 3 + c] =
+            cineonEncode(image.pixels[i * image.channelCount() + std::size_t(rgb[c])]) / cineon::kMaxCode;
+  } else {
+    values = previewValues(file, image, rgb, display);
+  }
+  PluginWriteOptions options;
+  options.format = e.format;
+  options.bits = e.bits;
+  options.quality = e.quality;
+  options.colorSpace = e.cineonLog ? "KodakLog" : "sRGB";
+  if (e.cineonLog) options.dpxTransfer = "Printing density";
+  if (const auto version = metadata.find("lensrt:version"); version != metadata.end())
+    options.metadata.emplace_back("Software", std::string("lensrt ") + version->second);
+  // DPX's description field holds 32 characters.
+  if (!metadata.empty() && format == PluginOutput::Tiff)
+    options.metadata.emplace_back("ImageDescription", description(metadata));
+  try {
+    plugin.write(temporary, values, image.width, image.height, 3, options);
+  } catch (const InputError& e) {
+    throw InputError(file.string(), e.message());
+  }
+}
+
+}  // namespace lensrt
