@@ -51,7 +51,8 @@ RunResult renderFlat(const TempDir& dir, const std::string& out, const std::stri
   for (const std::string& a :
        {std::string(LENSRT_BINARY), std::string("render"), (dir / "sky.gltf").string(), std::string("--env"),
         std::string("constant:0.25"), std::string("--res"), std::string("40x34"), std::string("--spp"),
-        std::string("1"), std::string("-q"), std::string("-o"), (dir / out).string()})
+        std::string("1"), std::string("--spectral"), std::string("off"),  // the sky's value exactly
+        std::string("-q"), std::string("-o"), (dir / out).string()})
     args.push_back(a);
   args.insert(args.end(), flags.begin(), flags.end());
   return cli::runProgram("env", args);

@@ -24,12 +24,13 @@ namespace fs = std::filesystem;
 using cli::RunResult;
 using cli::TempDir;
 
-// A flat field: every pixel sees the constant sky, so every pixel is `radiance`.
+// A flat field: every pixel sees the constant sky, so every pixel is `radiance`
+// (RGB transport carries it exactly; spectral transport adds colour noise).
 RunResult renderFlat(const TempDir& dir, const std::string& out, const std::string& env = "constant:0.25",
                      const std::string& res = "40x34") {
   if (!fs::exists(dir / "sky.gltf")) cli::writeFile(dir / "sky.gltf", cli::kSkyOnlyGltf);
   return cli::runLensrt({"render", (dir / "sky.gltf").string(), "--env", env, "--res", res, "--spp", "1",
-                         "-q", "-o", (dir / out).string()});
+                         "--spectral", "off", "-q", "-o", (dir / out).string()});
 }
 
 // lensrt under another LENSRT_OIIO_PLUGIN.
