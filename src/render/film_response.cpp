@@ -58,7 +58,7 @@ T interpolate(const std::vector<T>& table, float nm) {
 
 std::vector<float> d65AtYOne() {
   const double whiteY = spectrumToXyz([](double nm) { return d65(nm); }).y;
-  std::vector<float> illuminant(std::size_t(FilmResponse::kSamples));
+  std::vector<float> illuminant(static_cast<std::size_t>(FilmResponse::kSamples));
   for (std::size_t i = 0; i < illuminant.size(); ++i)
     illuminant[i] = float(d65(FilmResponse::kMinNm + double(i)) / whiteY);
   return illuminant;
