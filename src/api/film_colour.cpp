@@ -53,9 +53,8 @@ std::function<double(double)> lightOfColour(const Rgb& c) {
   return [s](double nm) { return double(s(float(nm))) * d65(nm); };
 }
 
-}  // namespace
-
-void checkColourOptions(const CameraOptions& o) {
+// The checks that need no file: each flag's syntax and how they combine.
+void checkColourFlags(const CameraOptions& o) {
   if (o.spectral == "off") {
     if (!o.sensorResponse.empty())
       throw UsageError("--sensor-response", "needs spectral transport (--spectral on)");
@@ -69,18 +68,30 @@ void checkColourOptions(const CameraOptions& o) {
   if (o.outputSpace != "camera" && !parseColorSpace(o.outputSpace))
     throw UsageError("--output-space",
                      "expected srgb, rec2020, acescg, xyz or camera, got '" + o.outputSpace + "'");
-  loadSensorResponse(responseName(o));  // an unknown name or a bad file fails before the scene loads
-  if (o.outputSpace == "camera" && responseName(o) == kCie1931Response)
+}
+
+void checkCameraSpace(const CameraOptions& o, const SensorResponse& sensor) {
+  if (o.outputSpace == "camera" && sensor.cie1931)
     throw UsageError("--output-space",
                      "camera is the RGB of a camera's response; the CIE 1931 observer has none "
                      "(choose --sensor-response, or srgb, rec2020, acescg, xyz)");
 }
 
+}  // namespace
+
+void checkColourOptions(const CameraOptions& o) {
+  checkColourFlags(o);
+  if (o.spectral == "off") return;
+  // An unknown name or a bad file fails before the scene loads.
+  checkCameraSpace(o, loadSensorResponse(responseName(o)));
+}
+
 std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const std::optional<Rgb>& sceneLight,
                                                  Warnings& warnings) {
-  checkColourOptions(o);
+  checkColourFlags(o);
   if (o.spectral == "off") return nullptr;
-  const SensorResponse sensor = loadSensorResponse(responseName(o));
+  const SensorResponse sensor = loadSensorResponse(responseName(o));  // read once here
+  checkCameraSpace(o, sensor);
   // Cameras balance automatically by default, as a camera does; the CIE
   // observer records colorimetry (D65 is white).
   const std::string wb = !o.whiteBalance.empty() ? o.whiteBalance : (sensor.cie1931 ? "none" : "auto");
@@ -115,14 +126,16 @@ std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const s
     }
   }
 
+  // The output's white in XYZ (CIE XYZ has none: D65's), which the neutral
+  // is adapted to and records exactly.
+  const Vec3d target =
+      space.id == ColorSpaceId::Xyz ? spectrumToXyz(d65AtUnitY) : space.rgbToXyz * Vec3d{1, 1, 1};
   if (sensor.cie1931) {
-    // XYZ adapted from the neutral's white to the output's (CIE XYZ: to D65,
-    // or left alone without a white balance).
-    const Vec3d source = spectrumToXyz(neutral);
-    const Vec3d target =
-        space.id == ColorSpaceId::Xyz ? spectrumToXyz(d65AtUnitY) : space.rgbToXyz * Vec3d{1, 1, 1};
-    const Mat3d adapt =
-        (space.id == ColorSpaceId::Xyz && wb == "none") ? Mat3d{} : bradfordAdaptation(source, target);
+    // XYZ adapted from the neutral's white to the output's (CIE XYZ without a
+    // white balance is left alone).
+    const Mat3d adapt = (space.id == ColorSpaceId::Xyz && wb == "none")
+                            ? Mat3d{}
+                            : bradfordAdaptation(spectrumToXyz(neutral), target);
     return std::make_shared<const FilmResponse>(FilmResponse::make(
         info, [](double nm) { return cieXyzMatching(nm) / kCieYIntegral; }, space.xyzToRgb * adapt, neutral,
         space.xyzToRgb * target, FilmResponse::cie1931SamplingWeight));
@@ -146,8 +159,6 @@ std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const s
   // patches lit by the white balance's illuminant (pbrt-v4's PixelSensor),
   // then adapted to the output's white; the grey card is then exact.
   const Mat3d toXyz = fitCameraToXyz(sensor, neutral);
-  const Vec3d target =
-      space.id == ColorSpaceId::Xyz ? spectrumToXyz(d65AtUnitY) : space.rgbToXyz * Vec3d{1, 1, 1};
   const Mat3d adapt = bradfordAdaptation(spectrumToXyz(neutral), target);
   return std::make_shared<const FilmResponse>(FilmResponse::make(
       info, curves, space.xyzToRgb * adapt * toXyz, neutral, space.xyzToRgb * target, samplingWeight));
