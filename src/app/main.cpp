@@ -13,6 +13,7 @@
 #include "app/command.h"
 #include "cluster/cluster.h"
 #include "core/error.h"
+#include "core/leak_check.h"
 
 namespace {
 
@@ -73,9 +74,7 @@ std::string unknownCommand(const CLI::App& app, int argc, char** argv) {
   return "";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   CLI::App app{
       "lensrt: a path tracer that renders glTF scenes through real camera optics.\n"
       "Example: lensrt render scenes/dof_row.gltf --spp 64 -o out/dof_row.exr",
@@ -173,4 +172,12 @@ int main(int argc, char** argv) {
     return fail(1, e.what());
   }
   return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int status = run(argc, argv);
+  lensrt::checkLeaksBeforeExit();
+  return status;
 }
