@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/warnings.h"
 #include "fuzz/fuzz_check.h"
+#include "fuzz/oiio_plugin_first.h"
 #include "render/gltf_bsdf.h"
 #include "render/material_eval.h"
 #include "scene/camera_selection.h"
@@ -116,6 +117,11 @@ void exercise(const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  lensrt::fuzz::loadOiioPluginFirst();
+  return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const bool glb = size >= 4 && data[0] == 'g' && data[1] == 'l' && data[2] == 'T' && data[3] == 'F';

@@ -18,6 +18,7 @@
 
 #include "core/error.h"
 #include "fuzz/fuzz_check.h"
+#include "fuzz/oiio_plugin_first.h"
 #include "image/image_io.h"
 
 namespace {
@@ -31,6 +32,11 @@ const bool kOpenExrLimits = [] {
 }();
 
 }  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  lensrt::fuzz::loadOiioPluginFirst();
+  return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace lensrt;
