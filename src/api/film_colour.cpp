@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -77,6 +78,53 @@ void checkCameraSpace(const CameraOptions& o, const SensorResponse& sensor) {
                      "(choose --sensor-response, or srgb, rec2020, acescg, xyz)");
 }
 
+// What a sensor's curves record of a light (a reflectance of 1 under it),
+// integrated as the renderer integrates (FilmResponse::make): the product of
+// the two tables, each linear between whole nanometres.
+Vec3d recordedBy(const SensorResponse& sensor, const std::function<double(double)>& light) {
+  Vec3d recorded{0, 0, 0};
+  for (double nm = FilmResponse::kMinNm; nm < FilmResponse::kMaxNm; nm += 1) {
+    const Vec3d s0 = sensor.at(nm), s1 = sensor.at(nm + 1);
+    const double a = light(nm), b = light(nm + 1);
+    recorded += (s0 * (2 * a + b) + s1 * (a + 2 * b)) / 6.0;
+  }
+  return recorded;
+}
+
+// The camera's own RGB beside the film's (sensor/camera_rgb.h). `green`:
+// what its green records of D65 at Y = 1, camera RGB's unit; `neutral`: what
+// it records of the white balance's illuminant.
+CameraRgb cameraRgb(const SensorResponse& sensor, const FilmResponse& film, double green,
+                    const Vec3d& neutral, const std::function<double(double)>& d65AtUnitY) {
+  CameraRgb c;
+  c.toImage = film.sensorToOutput() * Mat3d::diagonal({green, green, green});
+  c.fromImage = *c.toImage.inverse();  // make() refused a film that records no white
+  c.asShotNeutral = neutral / neutral.y;
+  // The curves as quantum efficiency (their peak is the sensor's QE): a
+  // camera value of 1 is `green` of the curves' integral over the light,
+  // whose photons are counted at the channel's mean wavelength under D65,
+  // against the basis's 555 nm.
+  double peak = 0;
+  Vec3d weight{0, 0, 0}, weightedNm{0, 0, 0};
+  for (double nm = FilmResponse::kMinNm; nm <= FilmResponse::kMaxNm; nm += 1) {
+    const Vec3d s = sensor.at(nm);
+    peak = std::max({peak, s.x, s.y, s.z});
+    weight += s * d65AtUnitY(nm);
+    weightedNm += s * (d65AtUnitY(nm) * nm);
+  }
+  // (`green` is in the units of spectrumToXyz, whose Y is the ybar integral
+  // over kCieYIntegral: luminance 1 is kCieYIntegral of ybar.)
+  c.relativeElectrons = (weightedNm / weight) * (green / peak / kCieYIntegral / 555.0);
+  // DNG's ColorMatrix1: XYZ to camera RGB under D65, the inverse of the
+  // chart's fit under D65 (in camera RGB's unit).
+  const Mat3d cameraToXyz = fitCameraToXyz(sensor, d65AtUnitY) * Mat3d::diagonal({green, green, green});
+  const std::optional<Mat3d> xyzToCamera = cameraToXyz.inverse();
+  if (!xyzToCamera)
+    throw InputError(sensor.name, "the response's channels are not independent: no colour matrix fits");
+  c.xyzToCamera = *xyzToCamera;
+  return c;
+}
+
 }  // namespace
 
 void checkColourOptions(const CameraOptions& o) {
@@ -86,10 +134,9 @@ void checkColourOptions(const CameraOptions& o) {
   checkCameraSpace(o, loadSensorResponse(responseName(o)));
 }
 
-std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const std::optional<Rgb>& sceneLight,
-                                                 Warnings& warnings) {
+FilmColour filmColour(const CameraOptions& o, const std::optional<Rgb>& sceneLight, Warnings& warnings) {
   checkColourFlags(o);
-  if (o.spectral == "off") return nullptr;
+  if (o.spectral == "off") return {};
   const SensorResponse sensor = loadSensorResponse(responseName(o));  // read once here
   checkCameraSpace(o, sensor);
   // Cameras balance automatically by default, as a camera does; the CIE
@@ -99,7 +146,8 @@ std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const s
   const ColorSpace& space = colorSpace(cameraSpace ? ColorSpaceId::Srgb : *parseColorSpace(o.outputSpace));
   if (sensor.cie1931 && wb == "none" && space.id == ColorSpaceId::Srgb)
     // The built-in response lives as long as the program: a non-owning pointer.
-    return std::shared_ptr<const FilmResponse>(std::shared_ptr<const void>(), &FilmResponse::cie1931Srgb());
+    return {std::shared_ptr<const FilmResponse>(std::shared_ptr<const void>(), &FilmResponse::cie1931Srgb()),
+            std::nullopt};
 
   FilmResponse::Info info;
   info.response = sensor.name;
@@ -136,9 +184,10 @@ std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const s
     const Mat3d adapt = (space.id == ColorSpaceId::Xyz && wb == "none")
                             ? Mat3d{}
                             : bradfordAdaptation(spectrumToXyz(neutral), target);
-    return std::make_shared<const FilmResponse>(FilmResponse::make(
-        info, [](double nm) { return cieXyzMatching(nm) / kCieYIntegral; }, space.xyzToRgb * adapt, neutral,
-        space.xyzToRgb * target, FilmResponse::cie1931SamplingWeight));
+    return {std::make_shared<const FilmResponse>(FilmResponse::make(
+                info, [](double nm) { return cieXyzMatching(nm) / kCieYIntegral; }, space.xyzToRgb * adapt,
+                neutral, space.xyzToRgb * target, FilmResponse::cie1931SamplingWeight)),
+            std::nullopt};
   }
 
   // A camera: its R, G, B curves, drawn in proportion to their sum under D65.
@@ -147,21 +196,23 @@ std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& o, const s
     const Vec3d c = sensor.at(nm);
     return (c.x + c.y + c.z) * d65(nm);
   };
+  const Vec3d d65Recorded = recordedBy(sensor, d65AtUnitY);
+  std::shared_ptr<const FilmResponse> film;
   if (cameraSpace) {
     // The camera's own RGB, unbalanced as a raw file is (the white balance
     // is the metadata's): scaled as one so that D65's green records 1.
-    Vec3d recorded{0, 0, 0};
-    for (double nm = kCieMinNm; nm <= kCieMaxNm; nm += 1) recorded += sensor.at(nm) * d65AtUnitY(nm);
-    return std::make_shared<const FilmResponse>(
-        FilmResponse::make(info, curves, Mat3d{}, d65AtUnitY, recorded / recorded.y, samplingWeight));
+    film = std::make_shared<const FilmResponse>(
+        FilmResponse::make(info, curves, Mat3d{}, d65AtUnitY, d65Recorded / d65Recorded.y, samplingWeight));
+  } else {
+    // Camera RGB to XYZ: the least-squares 3x3 over the ColorChecker's 24
+    // patches lit by the white balance's illuminant (pbrt-v4's PixelSensor),
+    // then adapted to the output's white; the grey card is then exact.
+    const Mat3d toXyz = fitCameraToXyz(sensor, neutral);
+    const Mat3d adapt = bradfordAdaptation(spectrumToXyz(neutral), target);
+    film = std::make_shared<const FilmResponse>(FilmResponse::make(
+        info, curves, space.xyzToRgb * adapt * toXyz, neutral, space.xyzToRgb * target, samplingWeight));
   }
-  // Camera RGB to XYZ: the least-squares 3x3 over the ColorChecker's 24
-  // patches lit by the white balance's illuminant (pbrt-v4's PixelSensor),
-  // then adapted to the output's white; the grey card is then exact.
-  const Mat3d toXyz = fitCameraToXyz(sensor, neutral);
-  const Mat3d adapt = bradfordAdaptation(spectrumToXyz(neutral), target);
-  return std::make_shared<const FilmResponse>(FilmResponse::make(
-      info, curves, space.xyzToRgb * adapt * toXyz, neutral, space.xyzToRgb * target, samplingWeight));
+  return {film, cameraRgb(sensor, *film, d65Recorded.y, recordedBy(sensor, neutral), d65AtUnitY)};
 }
 
 Mat3d fitCameraToXyz(const SensorResponse& sensor, const std::function<double(double)>& illuminant) {

@@ -23,15 +23,23 @@
 #include "api/camera_options.h"
 #include "core/warnings.h"
 #include "render/film_response.h"
+#include "sensor/camera_rgb.h"
 #include "sensor/sensor_response.h"
 
 namespace lensrt {
 
-// None for --spectral off. `sceneLight`: the colour of the scene's dominant
-// light (RenderJob::dominantLightColour), for --white-balance auto. Throws
+struct FilmColour {
+  std::shared_ptr<const FilmResponse> response;  // none for --spectral off
+  // A camera response's own RGB (sensor/camera_rgb.h), for the sensor's
+  // readout and the raw file; none for cie1931 and RGB transport, whose
+  // image RGB is the sensor's.
+  std::optional<CameraRgb> camera;
+};
+
+// `sceneLight`: the colour of the scene's dominant light
+// (RenderJob::dominantLightColour), for --white-balance auto. Throws
 // UsageError for bad options.
-std::shared_ptr<const FilmResponse> filmResponse(const CameraOptions& options,
-                                                 const std::optional<Rgb>& sceneLight, Warnings& warnings);
+FilmColour filmColour(const CameraOptions& options, const std::optional<Rgb>& sceneLight, Warnings& warnings);
 
 // "rgb", or "spectral:" and the response's description: part of a render's
 // identity (a checkpoint resumes, and tiles merge, only with the same transport).

@@ -17,17 +17,35 @@ namespace {
 // RGB. The mosaic holds the image's RGB, which is the output space's, white
 // balanced so that D65 (or the chosen white) records that space's white: the
 // space's XYZ-to-RGB after the adaptation from D65 to its white.
+std::array<double, 9> rowMajor(const Mat3d& m) {
+  std::array<double, 9> out{};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out[std::size_t(3 * r + c)] = m(r, c);
+  return out;
+}
+
 std::array<double, 9> rawColorMatrix(const CameraOptions& options) {
   const std::optional<ColorSpaceId> id = parseColorSpace(options.outputSpace);
   if (!id || *id == ColorSpaceId::Srgb) return kXyzToLinearSrgb;
   const ColorSpace& space = colorSpace(*id);
   const Vec3d d65 = colorSpace(ColorSpaceId::Srgb).rgbToXyz * Vec3d{1, 1, 1};
-  const Mat3d m = *id == ColorSpaceId::Xyz
+  return rowMajor(*id == ColorSpaceId::Xyz
                       ? Mat3d{}
-                      : space.xyzToRgb * bradfordAdaptation(d65, space.rgbToXyz * Vec3d{1, 1, 1});
-  std::array<double, 9> out{};
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) out[std::size_t(3 * r + c)] = m(r, c);
+                      : space.xyzToRgb * bradfordAdaptation(d65, space.rgbToXyz * Vec3d{1, 1, 1}));
+}
+
+// The image's R, G, B in the camera's channels, as the sensor read them
+// (imageToSensorValues) or, without a readout, as camera RGB.
+Image cameraChannels(const Image& image, const std::optional<SensorReadout>& readout,
+                     const CameraRgb& cameraRgb) {
+  Image out(image.width, image.height, {"R", "G", "B"});
+  out.originX = image.originX, out.originY = image.originY;
+  out.frameWidth = image.frameWidth, out.frameHeight = image.frameHeight;
+  const int red = image.channelIndex("R");
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = image.at(x, y, red + c);
+  transformRgb(out, readout ? imageToSensorValues(*readout) : cameraRgb.fromImage);
   return out;
 }
 
@@ -44,10 +62,13 @@ void checkRawOutput(const RawOutputOptions& o) {
 
 void writeRawOutput(const RawOutputOptions& o, const Image& image,
                     const std::optional<SensorReadout>& readout, const Camera& camera,
-                    const CameraOptions& options) {
+                    const CameraOptions& options, const std::optional<CameraRgb>& cameraRgb) {
   const CfaPattern pattern = *parseCfaPattern(o.cfa);
-  const Mosaic mosaic = readout ? makeMosaic(image, pattern, &readout->params, &readout->exposure)
-                                : makeMosaic(image, pattern, nullptr, nullptr);
+  std::optional<Image> inCamera;
+  if (cameraRgb) inCamera = cameraChannels(image, readout, *cameraRgb);
+  const Image& sites = inCamera ? *inCamera : image;
+  const Mosaic mosaic = readout ? makeMosaic(sites, pattern, &readout->params, &readout->exposure)
+                                : makeMosaic(sites, pattern, nullptr, nullptr);
   const CameraInfo info = camera.info();
   DngDescription d;
   // The pattern is placed by the frame (a tile's mosaic is the frame's): the
@@ -59,7 +80,9 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
       d.pattern.name[std::size_t(y * 2 + x)] = "RGB"[colour];
     }
   d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
-  d.colorMatrix1 = rawColorMatrix(options);
+  d.colorMatrix1 = cameraRgb ? rowMajor(cameraRgb->xyzToCamera) : rawColorMatrix(options);
+  if (cameraRgb)
+    d.asShotNeutral = {cameraRgb->asShotNeutral.x, cameraRgb->asShotNeutral.y, cameraRgb->asShotNeutral.z};
   d.exposureSeconds = shutterSeconds(options);
   d.iso = options.exposure == "physical" ? options.iso.value_or(100.0)
                                          : (readout ? readout->params.baseIso : 100.0);

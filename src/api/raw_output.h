@@ -25,10 +25,13 @@ void checkRawOutput(const RawOutputOptions& options);
 
 // Writes the raw file of `image` (its R, G, B: after a sensor readout, the
 // DN of each site's colour that its reading came from).
-// The camera is a linear Rec.709 (sRGB primaries) one: ColorMatrix1 is XYZ
-// to linear sRGB under D65, AsShotNeutral 1, 1, 1.
+// With a camera response's RGB (`cameraRgb`, FilmColour::camera) the mosaic
+// holds camera RGB, unbalanced, with the response's ColorMatrix1 and the
+// white balance as AsShotNeutral, as a camera's raw file. Otherwise the
+// camera is the image's RGB: ColorMatrix1 is XYZ to the output space (linear
+// sRGB by default) under D65, AsShotNeutral 1, 1, 1.
 void writeRawOutput(const RawOutputOptions& options, const Image& image,
                     const std::optional<SensorReadout>& readout, const Camera& camera,
-                    const CameraOptions& cameraOptions);
+                    const CameraOptions& cameraOptions, const std::optional<CameraRgb>& cameraRgb);
 
 }  // namespace lensrt

@@ -32,10 +32,11 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   const RenderJob job(scene, frame, warnings);
   checkImageFitsInMemory(job.width(), job.height(), filmChannels(request.settings.aovs).size());
   const std::unique_ptr<Camera> camera = job.makeCamera(request.camera, warnings);
-  const std::optional<SensorReadout> readout = sensorReadout(request.camera, camera->film());
+  const FilmColour colour = filmColour(request.camera, job.dominantLightColour(), warnings);
+  const std::optional<SensorReadout> readout = sensorReadout(request.camera, camera->film(), colour.camera);
   checkRawOutput(request.raw);
   RenderSettings settings = request.settings;
-  settings.filmResponse = filmResponse(request.camera, job.dominantLightColour(), warnings);
+  settings.filmResponse = colour.response;
   if (settings.samplesPerPixel < 1) throw UsageError("--spp", "expected at least 1 sample per pixel");
   const PixelRegion frameRegion = PixelRegion::wholeFrame(job.width(), job.height());
   const PixelRegion region = settings.region.value_or(frameRegion);
@@ -56,7 +57,7 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   result.metadata = job.metadata(*camera, settings, done, request.commandLine);
   if (readout) readOut(*readout, done.output.image, result.metadata, settings.seed);
   if (!request.raw.file.empty() && finished)
-    writeRawOutput(request.raw, done.output.image, readout, *camera, request.camera);
+    writeRawOutput(request.raw, done.output.image, readout, *camera, request.camera, colour.camera);
   result.metadata["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
   result.image = std::move(done.output.image);
   result.seconds = done.seconds;

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <vector>
+
 #include "core/error.h"
 
 namespace lensrt {
@@ -9,19 +11,24 @@ namespace lensrt {
 std::string SensorReadout::describe() const {
   const SensorParams& p = params;
   return fmt::format(
-      "{}: full well {:g} e, {:g} DN/e x {:g}, read noise {:g} e, dark {:g} e/s, PRNU {:g}%, DSNU {:g}%, "
-      "{}-bit ADC, black {:g} DN, QE {:g}",
-      p.name, p.fullWellE, p.gainDnPerE, exposure.analogGain, p.readNoiseE, p.darkCurrentEPerS, p.prnuPercent,
-      p.dsnuPercent, p.adcBits, p.blackLevelDn, p.quantumEfficiency);
+             "{}: full well {:g} e, {:g} DN/e x {:g}, read noise {:g} e, dark {:g} e/s, PRNU {:g}%, DSNU "
+             "{:g}%, "
+             "{}-bit ADC, black {:g} DN, QE {:g}",
+             p.name, p.fullWellE, p.gainDnPerE, exposure.analogGain, p.readNoiseE, p.darkCurrentEPerS,
+             p.prnuPercent, p.dsnuPercent, p.adcBits, p.blackLevelDn, p.quantumEfficiency) +
+         (camera ? ", read in the camera's RGB" : "");
 }
 
-std::optional<SensorReadout> sensorReadout(const CameraOptions& o, const FilmGeometry& film) {
+std::optional<SensorReadout> sensorReadout(const CameraOptions& o, const FilmGeometry& film,
+                                           const std::optional<CameraRgb>& cameraRgb) {
   // checkCameraOptions (run by makeCamera, before this) refused --sensor-params without --noise on.
   if (o.noise == "off") return std::nullopt;
   SensorReadout r;
+  r.camera = cameraRgb;
   r.params = sensorParams(o.sensorParams.empty() ? "default" : o.sensorParams);
   const double shutter = shutterSeconds(o);
-  if (o.exposure == "physical") {
+  r.physical = o.exposure == "physical";
+  if (r.physical) {
     const double pitchX = film.sensorWidthMm / film.width * 1e-3,
                  pitchY = film.sensorHeightMm / film.height * 1e-3;
     r.exposure = physicalSensorExposure(r.params, o.iso.value_or(100.0), shutter, pitchX * pitchY);
@@ -35,8 +42,36 @@ void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadou
   if (readout) identity["lensrt:settings"] += " sensor_noise=" + readout->params.name;
 }
 
+Mat3d imageToSensorValues(const SensorReadout& r) {
+  if (!r.camera) return Mat3d{};
+  return Mat3d::diagonal(r.physical ? r.camera->relativeElectrons : Vec3d{1, 1, 1}) * r.camera->fromImage;
+}
+
 void readOut(const SensorReadout& r, Image& image, ImageMetadata& metadata, std::uint64_t seed) {
-  applySensorReadout(image, r.params, r.exposure, seed);
+  if (!r.camera) {
+    applySensorReadout(image, r.params, r.exposure, seed);
+  } else {
+    // Read in the camera's channels, then back to the image's RGB; the
+    // noiseless channels keep the render's own values, not a round trip.
+    const Mat3d toSensor = imageToSensorValues(r);
+    const int red = image.channelIndex("R");
+    std::vector<float> render;
+    render.reserve(std::size_t(image.width) * std::size_t(image.height) * 3);
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x)
+        for (int c = 0; c < 3; ++c) render.push_back(image.at(x, y, red + c));
+    transformRgb(image, toSensor);
+    applySensorReadout(image, r.params, r.exposure, seed);
+    transformRgb(image, *toSensor.inverse());
+    const int noiseless = image.channelIndex("noiseless.R");
+    std::size_t i = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x)
+        for (int c = 0; c < 3; ++c) image.at(x, y, noiseless + c) = render[i++];
+    const Vec3d e =
+        (r.physical ? r.camera->relativeElectrons : Vec3d{1, 1, 1}) * r.exposure.electronsPerValue;
+    metadata["lensrt:sensor_channel_electrons"] = fmt::format("{:.9g} {:.9g} {:.9g}", e.x, e.y, e.z);
+  }
   addSensorIdentity(metadata, r);
   metadata["lensrt:sensor_noise"] = r.describe();
   metadata["lensrt:sensor_electrons_per_value"] = fmt::format("{:.9g}", r.exposure.electronsPerValue);

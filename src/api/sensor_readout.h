@@ -8,6 +8,7 @@
 #include "api/camera_options.h"
 #include "camera/camera.h"
 #include "image/image.h"
+#include "sensor/camera_rgb.h"
 #include "sensor/readout.h"
 #include "sensor/sensor_params.h"
 
@@ -16,6 +17,10 @@ namespace lensrt {
 struct SensorReadout {
   SensorParams params;
   SensorExposure exposure;
+  bool physical = false;  // --exposure physical: the curves count as quantum efficiency
+  // A camera response's own RGB (FilmColour::camera): then the sensor counts
+  // electrons in the camera's channels, not in the image's RGB.
+  std::optional<CameraRgb> camera;
   // lensrt:sensor_noise: "default: full well 20000 e, 0.2 DN/e x 1, read 3 e, ..."
   std::string describe() const;
 };
@@ -23,14 +28,24 @@ struct SensorReadout {
 // None with --noise off (options checked by checkCameraOptions). Physical exposure gives electrons from the
 // lux seconds on a pixel of the film's pitch; normalized exposure fills the well at an image value of 1.0.
 // Throws UsageError / InputError for bad settings.
-std::optional<SensorReadout> sensorReadout(const CameraOptions& options, const FilmGeometry& film);
+std::optional<SensorReadout> sensorReadout(const CameraOptions& options, const FilmGeometry& film,
+                                           const std::optional<CameraRgb>& cameraRgb);
 
 // Appends " sensor_noise=NAME" to lensrt:settings (an identity key: a noisy
 // and a noiseless part never merge); nothing without a readout.
 void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadout>& readout);
 
 // The readout applied to a render's image, with its metadata
-// (lensrt:sensor_noise, lensrt:sensor_electrons_per_value, lensrt:sensor_dn_per_electron).
+// (lensrt:sensor_noise, lensrt:sensor_electrons_per_value, lensrt:sensor_dn_per_electron,
+// and with a camera's RGB lensrt:sensor_channel_electrons). With a camera's
+// RGB, each channel is read in camera RGB and the reading turned back into
+// the image's RGB; noiseless.R/G/B keep the render.
 void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed);
+
+// A camera's RGB as the sensor reads it: camera RGB times each channel's
+// electrons relative to the readout's basis (1 without physical exposure),
+// so that the readout's electrons per value apply to every channel; the
+// identity without a camera's RGB.
+Mat3d imageToSensorValues(const SensorReadout& readout);
 
 }  // namespace lensrt

@@ -136,7 +136,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.frame.scene, message);
   });
   const RenderJob job(sceneOptions, warnings);
-  settings.filmResponse = filmResponse(args.camera, job.dominantLightColour(), warnings);
+  settings.filmResponse = filmColour(args.camera, job.dominantLightColour(), warnings).response;
   const nlohmann::json lens = lensFigures(args.camera);
   // An --fstop wider than the lens opens would leave the full lens at its
   // widest and the ideal models wider: all four use the widest instead.

@@ -100,8 +100,9 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   const PixelRegion region = partOfFrame(args, job.width(), job.height());
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
-  const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film());
-  settings.filmResponse = filmResponse(args.camera, job.dominantLightColour(), warnings);
+  const FilmColour colour = filmColour(args.camera, job.dominantLightColour(), warnings);
+  const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film(), colour.camera);
+  settings.filmResponse = colour.response;
   ImageMetadata identity = job.identity(*camera, settings);
   addSensorIdentity(identity, readout);
   // The running sums live on rank 0 alone: the other ranks get strips.
@@ -196,7 +197,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
     else
       writeOutputImage(args.output, result.output.image, metadata, options);
     if (!args.raw.file.empty() && finished)
-      writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera);
+      writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera, colour.camera);
   }
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",

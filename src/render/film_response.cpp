@@ -88,7 +88,9 @@ FilmResponse FilmResponse::make(Info info, const std::function<Vec3d(double)>& s
     throw std::invalid_argument("FilmResponse: the film records no white in some channel");
   std::vector<Rgb> curves(rgb.size());
   for (std::size_t i = 0; i < rgb.size(); ++i) curves[i] = Rgb(rgb[i] * scale);
-  return FilmResponse(std::move(info), std::move(curves), d65AtYOne(), samplingWeight);
+  FilmResponse film(std::move(info), std::move(curves), d65AtYOne(), samplingWeight);
+  film.sensorToOutput_ = Mat3d::diagonal(scale) * toOutput;
+  return film;
 }
 
 namespace {

@@ -63,6 +63,11 @@ class FilmResponse {
   static const FilmResponse& cie1931Srgb();
 
   const Info& info() const { return info_; }
+  // The matrix from the sensor's curves to the film's (make's `toOutput`
+  // with its per-channel scale): a pixel is this matrix times the sensor's
+  // integrals of the light, so its inverse gives the sensor's own reading
+  // back (the identity for a film built from its curves directly).
+  const Mat3d& sensorToOutput() const { return sensorToOutput_; }
   // "cie1931" or "cie1931,wb=5000K,output=acescg": the parts that differ from the defaults.
   std::string describe() const;
   Rgb curve(float nm) const;         // 0 outside the range
@@ -83,6 +88,7 @@ class FilmResponse {
 
  private:
   Info info_;
+  Mat3d sensorToOutput_;
   std::vector<Rgb> curves_;
   std::vector<float> illuminant_;
   static constexpr int kQuantiles = 1024;

@@ -49,7 +49,7 @@ TEST(FilmColour, CamerasReproduceTheChartCloseToTheObserver) {
     CameraOptions options;
     options.sensorResponse = camera;
     options.whiteBalance = "none";  // D65 is white: the chart as the observer sees it under D65
-    const std::shared_ptr<const FilmResponse> film = filmResponse(options, std::nullopt, warnings);
+    const std::shared_ptr<const FilmResponse> film = filmColour(options, std::nullopt, warnings).response;
     ASSERT_TRUE(film);
     const Mat3d toSrgb = colorSpace(ColorSpaceId::Srgb).xyzToRgb;
     double sumError = 0, worstGrey = 0;
@@ -68,6 +68,45 @@ TEST(FilmColour, CamerasReproduceTheChartCloseToTheObserver) {
     EXPECT_LT(sumError / n, 0.02) << camera;
     EXPECT_LT(worstGrey, 0.02) << camera;
   }
+}
+
+// A camera's own RGB (FilmColour::camera), checked against the curves
+// themselves: the image of any card, taken back to camera RGB, is what the
+// curves record of it (in units of D65's green); the output space "camera"
+// is camera RGB itself; the white balance's light is the neutral.
+TEST(FilmColour, CameraRgbIsWhatTheCurvesRecord) {
+  Warnings warnings;
+  const SensorResponse sensor = loadSensorResponse("sony-ilce-7m3");
+  Vec3d green{0, 0, 0}, tungsten{0, 0, 0};
+  for (double nm = 360; nm <= 830; nm += 1) {
+    green += sensor.at(nm) * d65AtUnitY(nm);
+    tungsten += sensor.at(nm) * blackbodySpectrum(3000, nm);
+  }
+  for (const char* space : {"srgb", "acescg", "camera"}) {
+    CameraOptions options;
+    options.sensorResponse = "sony-ilce-7m3";
+    options.outputSpace = space;
+    options.whiteBalance = "3000";
+    const FilmColour colour = filmColour(options, std::nullopt, warnings);
+    ASSERT_TRUE(colour.camera) << space;
+    for (std::size_t p : {0u, 5u, 14u, 19u}) {
+      const ColorCheckerPatch& patch = colorCheckerPatches()[p];
+      Vec3d curves{0, 0, 0};
+      for (double nm = 360; nm <= 830; nm += 1) curves += sensor.at(nm) * (patch.at(nm) * d65AtUnitY(nm));
+      const Vec3d camera = colour.camera->fromImage * recorded(*colour.response, patch);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(camera[c], curves[c] / green.y, 2e-3 * std::abs(curves.y / green.y))
+            << space << " patch " << p << " channel " << c;
+      if (std::string(space) == "camera") {
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j)
+            EXPECT_NEAR(colour.camera->toImage(i, j), i == j ? 1.0 : 0.0, 1e-3) << i << "," << j;
+      }
+    }
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(colour.camera->asShotNeutral[c], tungsten[c] / tungsten.y, 1e-3);
+  }
+  // The CIE observer has no camera RGB: the image's is the sensor's.
+  EXPECT_FALSE(filmColour(CameraOptions{}, std::nullopt, warnings).camera);
 }
 
 }  // namespace
