@@ -156,7 +156,8 @@ CommandAction addLensInfoCommand(CLI::App& lensApp, const CommandContext&) {
 }
 
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
-  CLI::App* lensApp = app.add_subcommand("lens", "Lens tools: info, diagram and plot of a prescription");
+  CLI::App* lensApp =
+      app.add_subcommand("lens", "Lens tools: info, diagram, plot and ghosts of a prescription");
   lensApp->require_subcommand(1);
   // One entry per `lens` sub-subcommand (diagram and plot join here).
   std::vector<std::pair<CLI::App*, CommandAction>> subs;
@@ -168,6 +169,7 @@ CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
   add(addLensInfoCommand);
   add(addLensDiagramCommand);
   add(addLensPlotCommand);
+  add(addLensGhostsCommand);
   return [subs] {
     for (const auto& [sub, action] : subs)
       if (sub->parsed()) return action();

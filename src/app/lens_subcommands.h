@@ -15,5 +15,7 @@ CommandAction addLensInfoCommand(CLI::App& lens, const CommandContext& context);
 // add their calls to the table in lens_command.cpp when they land.
 CommandAction addLensDiagramCommand(CLI::App& lens, const CommandContext& context);
 CommandAction addLensPlotCommand(CLI::App& lens, const CommandContext& context);
+// lens_ghosts_command.cpp: `lens ghosts LENS [--coatings X] [--json]`.
+CommandAction addLensGhostsCommand(CLI::App& lens, const CommandContext& context);
 
 }  // namespace lensrt
