@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "optics/trace_lanes.h"
 
@@ -200,6 +201,68 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
     if constexpr (kCoated)
       if (eta != 0.0) transmittance *= refractionTransmittance(*coating_, in, d, n1, n2, wavelengthNm);
   }
+  return finished(o, d, transmittance);
+}
+
+std::optional<LensRay> LensSystem::traceGhostFromScene(const LensRay& ray, int first, int second,
+                                                       double wavelengthNm, std::vector<Vec3d>* path) const {
+  const int count = surfaceCount();
+  if (!(0 <= second && second < first && first < count) || !validInput<false>(ray)) return std::nullopt;
+  const bool dLine = wavelengthNm == kWavelengthDNm;
+  const auto indexAfter = [&](int i) {
+    if (i < 0) return 1.0;
+    return dLine ? surfaces_[std::size_t(i)].ndAfter : surfaces_[std::size_t(i)].after.index(wavelengthNm);
+  };
+  const Coating reflectionCoating = coating_.value_or(Coating::None);
+  Vec3d o = ray.origin, d = normalize(ray.direction);
+  double transmittance = ray.transmittance;
+  // Surface i met travelling toward +z (forward) or -z: the indices on the
+  // side the ray comes from and on the other.
+  const auto sides = [&](int i, bool forward) {
+    const double before = indexAfter(i - 1), after = indexAfter(i);
+    return forward ? std::pair{before, after} : std::pair{after, before};
+  };
+  const auto hit = [&](int i, bool forward, double eta) {
+    const TraceSurface& s = surfaces_[std::size_t(i)];
+    return forward ? step<false>(s, eta, o, d, path) : step<true>(s, eta, o, d, path);
+  };
+  const auto cross = [&](int i, bool forward) {
+    const auto [n1, n2] = sides(i, forward);
+    const double eta = surfaces_[std::size_t(i)].isStop || n1 == n2 ? 0.0 : n1 / n2;
+    const Vec3d in = d;
+    if (!hit(i, forward, eta)) return false;
+    if (coating_ && eta != 0.0)
+      transmittance *= refractionTransmittance(*coating_, in, d, n1, n2, wavelengthNm);
+    return true;
+  };
+  const auto reflect = [&](int i, bool forward) {
+    if (!hit(i, forward, 0.0)) return false;
+    const TraceSurface& s = surfaces_[std::size_t(i)];
+    const Vec3d local{o.x, o.y, o.z - s.z};
+    Vec3d n = s.asphere         ? asphereNormal(*s.asphere, local)
+              : s.radius == 0.0 ? Vec3d{0.0, 0.0, 1.0}
+                                : Vec3d{local.x, local.y, local.z - s.radius} * s.invRadius;
+    n = normalize(n);
+    if (dot(n, d) > 0.0) n = -n;
+    const double cosI = std::min(1.0, -dot(n, d));
+    // The Fresnel reflectance 1 - T, with the refraction angle the surface
+    // would have given (1 under total internal reflection).
+    const auto [n1, n2] = sides(i, forward);
+    const double sin2T = (n1 / n2) * (n1 / n2) * std::max(0.0, 1.0 - cosI * cosI);
+    transmittance *= sin2T >= 1.0 ? 1.0
+                                  : 1.0 - surfaceTransmittance(reflectionCoating, n1, n2, cosI,
+                                                               std::sqrt(1.0 - sin2T), wavelengthNm);
+    d = d + n * (2.0 * cosI);
+    return true;
+  };
+  for (int i = 0; i < first; ++i)
+    if (!cross(i, true)) return std::nullopt;
+  if (!reflect(first, true)) return std::nullopt;
+  for (int i = first - 1; i > second; --i)
+    if (!cross(i, false)) return std::nullopt;
+  if (!reflect(second, false)) return std::nullopt;
+  for (int i = second + 1; i < count; ++i)
+    if (!cross(i, true)) return std::nullopt;
   return finished(o, d, transmittance);
 }
 

@@ -69,6 +69,18 @@ class LensSystem {
   std::optional<LensRay> traceFromScene(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
                                         std::vector<Vec3d>* path = nullptr) const;
 
+  // A ghost (optics/ghosts.h): a ray from the scene that reflects at surface
+  // `first`, back toward the scene, then at `second` (second < first), and
+  // leaves the rear surface toward the film; every other surface refracts
+  // it, and apertures block it as in the other traces. Its transmittance is
+  // the input's times the Fresnel reflectance of both reflections (with the
+  // lens's coating, bare glass without one) and, when the lens models
+  // coatings, the refractions' transmittance. nullopt when blocked or when
+  // the surfaces are out of range or not second < first.
+  std::optional<LensRay> traceGhostFromScene(const LensRay& ray, int first, int second,
+                                             double wavelengthNm = kWavelengthDNm,
+                                             std::vector<Vec3d>* path = nullptr) const;
+
  private:
   // Everything about a surface that does not depend on the ray, laid out for
   // the trace loop.

@@ -98,6 +98,8 @@ DrawnRay traceForDrawing(const LensSystem& lens, const FieldPoint& field, double
   return drawn;
 }
 
+constexpr const char* kGhostColour = "#e91e63";
+
 double niceLength(double target) {
   const double mag = std::pow(10.0, std::floor(std::log10(target)));
   for (const double m : {5.0, 2.0, 1.0})
@@ -107,7 +109,7 @@ double niceLength(double target) {
 
 }  // namespace
 
-Svg drawLensDiagram(const LensView& view) {
+Svg drawLensDiagram(const LensView& view, const std::optional<DiagramGhost>& ghost) {
   const LensSystem& lens = view.lens;
   const LensPrescription& rx = lens.prescription();
   const ParaxialData& p = lens.paraxial();
@@ -274,6 +276,31 @@ Svg drawLensDiagram(const LensView& view) {
   }
   svg.endGroup();
 
+  // The ghost: an axial bundle from infinity across the front element, the
+  // rays the apertures let through drawn to the film.
+  if (ghost) {
+    svg.beginGroup(fmt::format("class=\"ghost\" stroke=\"{}\"", kGhostColour));
+    const double front = lens.frontApertureRadius();
+    const int count = 15;
+    for (int k = 0; k < count; ++k) {
+      const double x = front * (-0.98 + 1.96 * k / (count - 1));
+      std::vector<Vec3d> path;
+      const auto out = lens.traceGhostFromScene({{x, 0.0, zLo}, {0.0, 0.0, 1.0}}, ghost->first, ghost->second,
+                                                kWavelengthDNm, &path);
+      if (!out || std::abs(out->direction.z) < 1e-9) continue;
+      std::vector<Vec2d> pts{map(zLo, x)};
+      for (const Vec3d& q : path) pts.push_back(map(q.z, q.x));
+      // To the film, or to the drawing's edge on the way.
+      double t = (filmZ - out->origin.z) / out->direction.z;
+      const double xEnd = out->origin.x + out->direction.x * t;
+      if (std::abs(xEnd) > xMax) t = (std::copysign(xMax, xEnd) - out->origin.x) / out->direction.x;
+      const Vec3d end = out->origin + out->direction * t;
+      pts.push_back(map(end.z, end.x));
+      svg.polyline(pts, "class=\"ray\"");
+    }
+    svg.endGroup();
+  }
+
   // Film plane, as tall as the sensor's diagonal.
   {
     const double h = view.halfDiagonalMm();
@@ -316,6 +343,15 @@ Svg drawLensDiagram(const LensView& view) {
   for (const FieldFan& fan : fans) {
     svg.line({50, y}, {90, y}, fmt::format("stroke=\"{}\" stroke-width=\"2\"", fan.colour));
     svg.text({98, y + 4}, fan.label, "class=\"label\"");
+    y += 20;
+  }
+  if (ghost) {
+    svg.line({50, y}, {90, y}, fmt::format("stroke=\"{}\" stroke-width=\"2\"", kGhostColour));
+    svg.text({98, y + 4},
+             fmt::format(
+                 "ghost {},{}: an axial bundle reflected at surface {}, then at {} (numbered from the front)",
+                 ghost->first + 1, ghost->second + 1, ghost->first + 1, ghost->second + 1),
+             "class=\"label\"");
     y += 20;
   }
   svg.text({50, y + 6},

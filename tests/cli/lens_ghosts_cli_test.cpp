@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "cli/cli_util.h"
 
@@ -51,6 +54,44 @@ TEST(LensGhostsCli, BadArgumentsAreOneLine) {
   EXPECT_NE(missing.status, 0);
   EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
   EXPECT_NE(missing.err.find("no-such-lens"), std::string::npos) << missing.err;
+}
+
+// `lens diagram --ghost I,J` draws the ghost's bundle: the rays the
+// apertures pass, as polylines in their own group, with a legend line.
+TEST(LensGhostsCli, TheDiagramDrawsAGhostPath) {
+  const cli::TempDir dir;
+  const std::string svg = (dir / "g.svg").string();
+  const RunResult r = runLensrt({"lens", "diagram", "dgauss-50mm", "-o", svg, "--ghost", "10,2"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string text = cli::readFile(svg);
+  const std::size_t group = text.find("class=\"ghost\"");
+  ASSERT_NE(group, std::string::npos);
+  const std::size_t groupEnd = text.find("</g>", group);
+  int rays = 0;
+  for (std::size_t at = text.find("<polyline", group); at < groupEnd; at = text.find("<polyline", at + 1))
+    ++rays;
+  EXPECT_GE(rays, 8);  // of 15 across the front element: the 10,2 ghost passes most of them
+  EXPECT_NE(text.find("ghost 10,2: an axial bundle reflected at surface 10, then at 2"), std::string::npos);
+  EXPECT_EQ(runLensrt({"lens", "diagram", "dgauss-50mm", "-o", svg}).status, 0);
+  EXPECT_EQ(cli::readFile(svg).find("class=\"ghost\""), std::string::npos);
+}
+
+TEST(LensGhostsCli, ABadGhostIsOneLine) {
+  const cli::TempDir dir;
+  const std::string svg = (dir / "g.svg").string();
+  for (const auto& [arg, says] : std::vector<std::pair<std::string, std::string>>{
+           {"6,2", "surface 6 reflects nothing (it is the stop)"},
+           {"2,10", "expected I > J, got 2,10 (try 10,2)"},
+           {"12,1", "surface 12 is not one of the lens's 11 surfaces"},
+           {"10,", "expected two surface numbers I,J"},
+           {"ten,two", "expected two surface numbers I,J"}}) {
+    const RunResult r = runLensrt({"lens", "diagram", "dgauss-50mm", "-o", svg, "--ghost", arg});
+    EXPECT_EQ(r.status, 2) << arg;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("lensrt: error: --ghost: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(svg)) << arg;
+  }
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "optics/lens_system.h"
 #include "optics/paraxial.h"
 #include "optics_test_util.h"
 
@@ -98,6 +99,34 @@ TEST(Ghosts, EveryPairOfReflectingSurfacesStrongestFirst) {
       EXPECT_LE(ghosts[i].strength, ghosts[i - 1].strength);
     }
   }
+}
+
+// The exact trace of a ghost (LensSystem::traceGhostFromScene) near the axis
+// is the paraxial ghost: an axial ray at a small height crosses the axis at
+// the paraxial focus, and carries R_i R_j (bare glass at normal incidence).
+TEST(Ghosts, TheExactTraceNearTheAxisMeetsTheParaxialGhost) {
+  for (const char* name : {"dgauss-50mm", "tessar-100mm"}) {
+    SCOPED_TRACE(name);
+    const LensSystem lens(test::libraryLens(name));
+    const double h = 1e-3 * lens.frontApertureRadius();
+    const double filmZ = lens.paraxial().rearFocalZ;
+    int compared = 0;
+    for (const GhostPath& g : ghostPaths(lens.prescription(), Coating::None)) {
+      if (!g.focusFromFilmMm || std::abs(*g.focusFromFilmMm) > 1e4) continue;  // near afocal
+      const auto out = lens.traceGhostFromScene({{h, 0.0, -1.0}, {0.0, 0.0, 1.0}}, g.first, g.second);
+      ASSERT_TRUE(out) << g.first << "," << g.second;
+      const double crossZ = out->origin.z - out->origin.x * out->direction.z / out->direction.x;
+      const double want = filmZ + *g.focusFromFilmMm;
+      EXPECT_NEAR(crossZ, want, 1e-3 * (std::abs(want - lens.rearZ()) + 1.0)) << g.first << "," << g.second;
+      EXPECT_NEAR(out->transmittance, g.strength, 1e-4 * g.strength) << g.first << "," << g.second;
+      ++compared;
+    }
+    EXPECT_GT(compared, 20);
+  }
+  // Out of range, or not second < first: nothing.
+  const LensSystem lens(test::libraryLens("dgauss-50mm"));
+  EXPECT_FALSE(lens.traceGhostFromScene({{1.0, 0.0, -1.0}, {0.0, 0.0, 1.0}}, 2, 5));
+  EXPECT_FALSE(lens.traceGhostFromScene({{1.0, 0.0, -1.0}, {0.0, 0.0, 1.0}}, 99, 1));
 }
 
 }  // namespace
