@@ -59,6 +59,7 @@ class Lens:
     def distortion(
         self, fstop: float | None = None, focus: _Distance = "inf", sensor: _Sensor = "36x24", points: int = 41
     ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+    def ghosts(self, coatings: str = "none") -> dict[str, Any]: ...
 
 class RenderResult:
     @property

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "api/lens_ghosts.h"
 #include "api/lens_info.h"
 #include "api/lens_loading.h"
 #include "api/lens_view.h"
@@ -20,6 +21,7 @@
 #include "optics/coating.h"
 #include "optics/distortion.h"
 #include "optics/focus.h"
+#include "optics/ghosts.h"
 #include "optics/lens_system.h"
 #include "optics/relative_illumination.h"
 #include "optics/spot_diagram.h"
@@ -55,6 +57,14 @@ class PyLens {
     const std::optional<Coating> coating = toCoating(coatings);
     o.coatings = coating ? coatingName(*coating) : "";
     return prepareLensView(lens_, o, warnings.sink());
+  }
+
+  py::object ghosts(py::handle coatings) const {
+    const Coating coating = toCoating(coatings).value_or(Coating::None);
+    requireRealImage(lens_);
+    return toPython(withLensErrors(lens_, [&] {
+      return lensGhostsJson(lens_.prescription, coating, strongestGhosts(lens_.prescription, coating));
+    }));
   }
 
   py::object info(py::handle fstop, py::handle focus, py::handle sensor, py::handle coc,
@@ -258,6 +268,11 @@ sensor: "WxH" in mm or a (width, height) pair in mm.
 coc: circle of confusion in mm (None: the sensor diagonal / 1500).
 coatings: "none", "single" or "multi", for the axial transmittance.
 Distances are in mm unless the key ends in _m (metres); None at infinity.)doc")
+      .def("ghosts", &PyLens::ghosts, arg("coatings") = "none",
+           R"doc(The two-reflection ghosts, strongest first: the dict `lensrt lens ghosts --json`
+prints (lens, coatings, ghosts: surfaces [I, J] numbered from the front,
+strength R_I R_J, passing, relative_flux, focus_from_film_mm or None,
+size_on_film_mm). coatings: "none", "single" or "multi".)doc")
       .def_property_readonly("surfaces", &PyLens::surfaces,
                              R"doc(The surfaces front to back, as dicts: radius_mm (0: flat), thickness_mm
 (to the next vertex), aperture_diameter_mm, z_mm (vertex), stop (bool), n_d, v_d

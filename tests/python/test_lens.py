@@ -16,6 +16,16 @@ def test_info_is_lens_info_json(cli_json):
         "--coatings", "multi")
 
 
+def test_ghosts_are_lens_ghosts_json(cli_json):
+    lens = lensrt.Lens("dgauss-50mm")
+    assert lens.ghosts() == cli_json("lens", "ghosts", "dgauss-50mm", "--json")
+    single = lens.ghosts(coatings="single")
+    assert single == cli_json("lens", "ghosts", "dgauss-50mm", "--coatings", "single", "--json")
+    assert len(single["ghosts"]) == 45
+    # A quarter-wave of MgF2 cuts every glass-air pair's strength by an order of magnitude or more.
+    assert single["ghosts"][0]["strength"] < lens.ghosts()["ghosts"][0]["strength"] / 10
+
+
 def test_surfaces_list_the_prescription():
     surfaces = lensrt.Lens("dgauss-50mm").surfaces
     assert len(surfaces) == 11
