@@ -85,6 +85,8 @@ class Scene:
         scene_index: int | None = None,
         allow_external_files: bool = False,
         max_texture_memory: int | None = None,
+        time: float = 0.0,
+        animation: str | int | None = None,
     ) -> None: ...
     @property
     def file(self) -> str: ...

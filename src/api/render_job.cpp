@@ -77,9 +77,10 @@ Environment defaultEnvironment(const EnvironmentSpec& spec) {
 }
 
 RenderJob::RenderJob(const SceneOptions& options, Warnings& warnings)
-    : RenderJob(std::make_shared<const Scene>(
-                    SceneLoadOptions{options.scene, options.sceneIndex, options.limits}, warnings),
-                options, warnings) {}
+    : RenderJob(
+          std::make_shared<const Scene>(
+              SceneLoadOptions{options.scene, options.sceneIndex, options.limits, options.time}, warnings),
+          options, warnings) {}
 
 RenderJob::RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& options, Warnings& warnings)
     : scene_(std::move(scene)), frame_(options) {
@@ -207,9 +208,11 @@ ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& se
   return {
       {"lensrt:scene_sha256", scene_->digest(frame_.environment.file)},
       {"lensrt:camera", camera.describe()},
-      {"lensrt:settings", fmt::format("res={}x{} max_depth={} environment={} channels={} transport={}",
-                                      width_, height_, frame_.maxDepth, environment_->describe(), aovs,
-                                      transportDescription(settings.filmResponse.get()))},
+      {"lensrt:settings",
+       fmt::format(
+           "res={}x{} max_depth={} environment={} channels={} transport={}{}", width_, height_,
+           frame_.maxDepth, environment_->describe(), aovs, transportDescription(settings.filmResponse.get()),
+           scene_->geometry().desc().pose.empty() ? std::string() : " " + scene_->geometry().desc().pose)},
       {"lensrt:seed", std::to_string(settings.seed)},
   };
 }

@@ -38,6 +38,7 @@ struct SceneOptions : FrameOptions {
   std::string scene;  // .gltf / .glb
   int sceneIndex = -1;
   SceneReadLimits limits;  // what the scene may make lensrt read and hold
+  AnimationTime time;      // --time/--frame and --animation
 };
 
 struct RenderJobResult {

@@ -12,7 +12,7 @@ namespace {
 // not a broken file.
 SceneDesc loadScene(const SceneLoadOptions& options, Warnings& warnings) {
   try {
-    return loadGltf(options.file, options.sceneIndex, warnings, options.limits);
+    return loadGltf(options.file, options.sceneIndex, warnings, options.limits, options.time);
   } catch (const SelectionError& e) {
     throw UsageError("--scene-index", e.file() + ": " + e.message());
   }

@@ -11,6 +11,7 @@
 
 #include "core/warnings.h"
 #include "render/material_eval.h"
+#include "scene/animation_time.h"
 #include "scene/render_scene.h"
 #include "scene/scene_file_access.h"
 
@@ -20,6 +21,7 @@ struct SceneLoadOptions {
   std::string file;        // .gltf / .glb
   int sceneIndex = -1;     // -1: the file's default scene
   SceneReadLimits limits;  // what the scene may make lensrt read and hold
+  AnimationTime time;      // the moment its animations pose it at
 };
 
 class Scene {

@@ -317,6 +317,7 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
       ->check(CLI::Range(-1, 1 << 20));
   addEnvironmentOptions(*cmd, args->frame.environment);
   addSceneAccessOptions(*cmd, args->frame.access);
+  addAnimationOptions(*cmd, args->frame);
   cmd->add_option("--tile-size", args->tileSize,
                   "tile size in pixels for scheduling (does not change the images)")
       ->check(CLI::Range(1, 4096))

@@ -140,6 +140,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
       ->check(integerIn(0, 1 << 20, "0-based"));
   addEnvironmentOptions(*cmd, args->frame.environment);
   addSceneAccessOptions(*cmd, args->frame.access);
+  addAnimationOptions(*cmd, args->frame);
   cmd->add_option(
          "--aov", args->aovs,
          "extra EXR channels, comma separated: depth (depth.Z, metres), normal (normal.X/Y/Z, world), "

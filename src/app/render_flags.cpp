@@ -1,6 +1,7 @@
 #include "app/render_flags.h"
 
 #include "app/option_checks.h"
+#include "core/error.h"
 
 namespace lensrt {
 
@@ -14,7 +15,23 @@ SceneOptions sceneOptions(const SceneArgs& args, bool quiet) {
   o.maxDepth = args.maxDepth;
   o.quiet = quiet;
   o.limits = sceneReadLimits(args.access);
+  if (args.time && args.frame) throw UsageError("--frame", "give --time SECONDS or --frame N, not both");
+  o.time.seconds = args.frame ? double(*args.frame) / args.fps : args.time.value_or(0.0);
+  o.time.animation = args.animation;
   return o;
+}
+
+void addAnimationOptions(CLI::App& cmd, SceneArgs& args) {
+  cmd.add_option("--time", args.time,
+                 "when the shutter opens, in seconds of the glTF's animations, e.g. --time 1.5 (default 0)")
+      ->check(numberIn(-1e9, 1e9, "seconds"));
+  cmd.add_option("--frame", args.frame, "the same counted in frames of --fps, e.g. --frame 36")
+      ->check(integerIn(-1000000000, 1000000000, "a frame number"));
+  cmd.add_option("--fps", args.fps, "frames per second for --frame, e.g. --fps 30")
+      ->check(numberIn(1e-3, 1e6, "frames per second"))
+      ->capture_default_str();
+  cmd.add_option("--animation", args.animation,
+                 "which glTF animation plays: a name or a 0-based index (default: all of them)");
 }
 
 void addEnvironmentOptions(CLI::App& cmd, EnvironmentArgs& args) {

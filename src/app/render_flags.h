@@ -3,6 +3,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
 
 #include "api/render_job.h"
 #include "api/render_options.h"
@@ -18,6 +20,10 @@ struct SceneArgs {
   int sceneIndex = -1;
   EnvironmentArgs environment;
   SceneAccessArgs access;
+  std::optional<double> time;  // --time SECONDS
+  std::optional<int> frame;    // --frame N, at --fps
+  double fps = 24.0;
+  std::string animation;  // --animation NAME|INDEX
 };
 
 // The api's options of those flags (UsageError for a bad --res or --env).
@@ -26,5 +32,7 @@ SceneOptions sceneOptions(const SceneArgs& args, bool quiet);
 void addEnvironmentOptions(CLI::App& command, EnvironmentArgs& args);
 // --allow-external-files (or LENSRT_ALLOW_EXTERNAL_FILES=1) and --max-texture-memory MIB.
 void addSceneAccessOptions(CLI::App& command, SceneAccessArgs& args);
+// --time SECONDS, --frame N, --fps F and --animation NAME|INDEX.
+void addAnimationOptions(CLI::App& command, SceneArgs& args);
 
 }  // namespace lensrt

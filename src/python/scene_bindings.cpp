@@ -120,7 +120,8 @@ py::array channelView(py::object owner, int first, int count) {
 
 class PyScene {
  public:
-  PyScene(py::handle file, py::handle sceneIndex, py::handle allowExternalFiles, py::handle maxTextureMiB) {
+  PyScene(py::handle file, py::handle sceneIndex, py::handle allowExternalFiles, py::handle maxTextureMiB,
+          py::handle time, py::handle animation) {
     SceneLoadOptions options;
     options.file = toPathText(file, "file");
     if (!sceneIndex.is_none()) options.sceneIndex = int(toInteger(sceneIndex, "scene_index", 0, 1 << 20));
@@ -129,6 +130,8 @@ class PyScene {
     if (!maxTextureMiB.is_none())
       access.maxTextureMiB = std::uint64_t(toInteger(maxTextureMiB, "max_texture_memory", 1, 1LL << 40));
     options.limits = sceneReadLimits(access);
+    options.time.seconds = toDouble(time, "time");
+    if (!animation.is_none()) options.time.animation = py::str(animation);
     WarningList warnings(options.file);
     {
       const py::gil_scoped_release release;
@@ -347,9 +350,12 @@ allow_external_files: let the scene read files outside its folder (only for
 scenes you trust). max_texture_memory: MiB its textures may take (None: half
 this machine's memory). Raises FileNotFoundError for a missing file and
 ValueError for a broken one. The GIL is released while it loads.)doc")
-      .def(py::init<py::handle, py::handle, py::handle, py::handle>(), arg("file"),
+      .def(py::init<py::handle, py::handle, py::handle, py::handle, py::handle, py::handle>(), arg("file"),
            arg("scene_index") = py::none(), arg("allow_external_files") = false,
-           arg("max_texture_memory") = py::none())
+           arg("max_texture_memory") = py::none(), arg("time") = 0.0, arg("animation") = py::none(),
+           R"doc(Loads a glTF scene and builds its BVH once. time: the moment (seconds) its animations
+pose the nodes, cameras and lights at (lensrt render --time); animation: a name or
+index to play one of them (None: all).)doc")
       .def_property_readonly("file", &PyScene::file, "The scene file (str).")
       .def("__repr__", [](const PyScene& s) { return "lensrt.Scene('" + s.file() + "')"; })
       .def("render", &PyScene::render,

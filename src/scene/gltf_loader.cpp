@@ -1,5 +1,6 @@
 #include "scene/gltf_loader.h"
 
+#include <fmt/core.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 
 #include "core/error.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_animation.h"
 #include "scene/gltf_context.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
@@ -334,7 +336,6 @@ void checkExtensions(const Context& ctx) {
     if (!gltf::isSupportedExtension(ext)) ctx.fail("required extension " + ext + " is not supported");
   for (const std::string& ext : ctx.model.extensionsUsed)
     if (!gltf::isSupportedExtension(ext)) ctx.warnUnsupportedExtension(ext);
-  if (!ctx.model.animations.empty()) ctx.warnings.warn("animations are ignored (the scene renders at rest)");
   if (!ctx.model.skins.empty())
     ctx.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
 }
@@ -357,10 +358,19 @@ bool finite(const Transform& t) {
   return true;
 }
 
-Transform localTransform(const Context& ctx, int index, const tinygltf::Node& node) {
+// The node's own transform, or with the animation's values in place of its
+// translation, rotation and scale where it sets them.
+Transform localTransform(const Context& ctx, int index, const tinygltf::Node& node,
+                         const gltf::AnimatedTrs* animated) {
   const std::string label = "node " + std::to_string(index);
   Transform local;
-  if (!node.matrix.empty()) {
+  if (animated) {
+    std::vector<double> t = node.translation, r = node.rotation, sc = node.scale;
+    if (animated->translation) t.assign(animated->translation->begin(), animated->translation->end());
+    if (animated->rotation) r.assign(animated->rotation->begin(), animated->rotation->end());
+    if (animated->scale) sc.assign(animated->scale->begin(), animated->scale->end());
+    local = trs(ctx, label, t, r, sc);
+  } else if (!node.matrix.empty()) {
     if (node.matrix.size() != 16) ctx.fail(label + ": matrix needs 16 values");
     // glTF node matrices are affine (decomposable into T * R * S): a
     // projective last row has no meaning here and no usable inverse.
@@ -387,7 +397,8 @@ Transform cameraFrame(const Transform& world) {
 
 class Traversal {
  public:
-  Traversal(const Context& ctx, SceneDesc& desc) : ctx_(ctx), desc_(desc) {}
+  Traversal(const Context& ctx, SceneDesc& desc, const std::map<int, gltf::AnimatedTrs>& animated)
+      : ctx_(ctx), desc_(desc), animated_(animated) {}
 
   void run(const std::vector<int>& roots) {
     struct Item {
@@ -408,7 +419,9 @@ class Traversal {
                   " is reached twice (a cycle or a shared child; glTF nodes must form trees)");
       visited[static_cast<std::size_t>(item.node)] = true;
       const tinygltf::Node& node = ctx_.model.nodes[static_cast<std::size_t>(item.node)];
-      const Transform world = item.parent * localTransform(ctx_, item.node, node);
+      const auto pose = animated_.find(item.node);
+      const Transform world = item.parent * localTransform(ctx_, item.node, node,
+                                                           pose == animated_.end() ? nullptr : &pose->second);
       if (!finite(world)) ctx_.fail("node " + std::to_string(item.node) + ": world transform is not finite");
       visit(item.node, node, world);
       for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
@@ -532,6 +545,7 @@ class Traversal {
 
   const Context& ctx_;
   SceneDesc& desc_;
+  const std::map<int, gltf::AnimatedTrs>& animated_;
   std::map<int, std::vector<int>> meshes_;  // glTF mesh -> desc meshes (one per primitive)
   gltf::MeshStats stats_;
 };
@@ -587,7 +601,7 @@ void checkRenderable(const Context& ctx, const SceneDesc& desc, const gltf::Mesh
 }  // namespace
 
 SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
-                   const SceneReadLimits& limits) {
+                   const SceneReadLimits& limits, const AnimationTime& time) {
   const std::string name = file.string();
   const tinygltf::Model model = parse(file, name, warnings, limits);
   const Context ctx{model, name, warnings, limits};
@@ -596,7 +610,11 @@ SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& 
   SceneDesc desc;
   desc.sourceFile = name;
   gltf::loadMaterials(ctx, desc);
-  Traversal traversal(ctx, desc);
+  const std::map<int, gltf::AnimatedTrs> animated = gltf::animatedNodes(ctx, time);
+  if (!model.animations.empty())
+    desc.pose =
+        fmt::format("time={:g} animation={}", time.seconds, time.animation.empty() ? "all" : time.animation);
+  Traversal traversal(ctx, desc, animated);
   traversal.run(sceneRoots(ctx, sceneIndex));
   checkRenderable(ctx, desc, traversal.stats());
   return desc;

@@ -7,13 +7,14 @@
 // (orthographic ones are kept, marked and warned about), metallic-roughness
 // materials with baseColor / metallicRoughness / normal / emissive textures,
 // KHR_materials_emissive_strength, KHR_lights_punctual (units: see
-// gltf_lights.cpp). Everything else the file uses is named in one warning each;
+// gltf_lights.cpp), node animations at a moment (gltf_animation.h). Everything else the file uses is named in one warning each;
 // a required extension we do not implement is an error.
 #pragma once
 
 #include <filesystem>
 
 #include "core/warnings.h"
+#include "scene/animation_time.h"
 #include "scene/scene_desc.h"
 #include "scene/scene_file_access.h"
 
@@ -26,8 +27,9 @@ namespace lensrt {
 // file has no scene `sceneIndex`. `limits` says what the file may make the
 // loader read and hold: by default only files in its folder
 // (scene_file_access.h); a URI refused, a data: URI or a texture over its
-// limit is an InputError naming it.
+// limit is an InputError naming it. `time`: the moment the animations
+// (scene/gltf_animation.h) pose the nodes, cameras and lights at.
 SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
-                   const SceneReadLimits& limits = {});
+                   const SceneReadLimits& limits = {}, const AnimationTime& time = {});
 
 }  // namespace lensrt

@@ -158,6 +158,9 @@ struct SceneDesc {
   std::vector<Texture> textures;
   std::vector<PunctualLight> lights;
   std::vector<CameraDesc> cameras;  // in the order the default scene's traversal finds them
+  // The moment the nodes are posed at, "time=1.25 animation=all", when the
+  // file has animations; empty when it has none (part of a render's identity).
+  std::string pose;
 
   Bounds3f worldBounds() const;
 };

@@ -238,3 +238,50 @@ def test_write_goes_through_the_plugin_beside_the_module(dof, cli, tmp_path, nam
     cli("render", DOF, "--res", "48x32", "--spp", "2", "--seed", "3", "-q", "-o", out)
     dof.render(res=(48, 32), spp=2, seed=3).write(tmp_path / name)
     assert lensrt.diff(out, tmp_path / name, fail=0)["overall"]["maxError"] == 0.0
+
+
+def test_time_poses_the_animated_scene(tmp_path):
+    """A black square that glTF animation moves from x = -2 to x = 2 over 2 s:
+    seen from the front at time 0 it sits left of centre, at 2 s right of it,
+    at 1 s in the middle."""
+    import base64
+    import json
+    import struct
+
+    pos = struct.pack("<12f", -0.5, -0.5, 0, 0.5, -0.5, 0, 0.5, 0.5, 0, -0.5, 0.5, 0)
+    idx = struct.pack("<6H", 0, 1, 2, 0, 2, 3) + bytes(4)  # padded to 16 bytes
+    times = struct.pack("<2f", 0, 2)
+    moves = struct.pack("<6f", -2, 0, 0, 2, 0, 0)
+    buf = pos + idx + times + moves
+    views = [(0, 48), (48, 12), (64, 8), (72, 24)]
+    gltf = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 6]}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 1.2, "znear": 0.1}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1]}}],
+        "buffers": [{"byteLength": len(buf),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(buf).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": o, "byteLength": n} for o, n in views],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [-0.5, -0.5, 0], "max": [0.5, 0.5, 0]},
+            {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [0], "max": [2]},
+            {"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC3"}],
+        "animations": [{"name": "slide", "samplers": [{"input": 2, "output": 3}],
+                        "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}],
+    }
+    path = tmp_path / "slide.gltf"
+    path.write_text(json.dumps(gltf))
+
+    def centre_x(scene):
+        lit = scene.render(res=(64, 32), spp=16, env=1).rgb.mean(axis=2)
+        cols = np.nonzero(lit.min(axis=0) < 0.5)[0]  # the black square hides the sky
+        return cols.mean() / 64
+
+    assert centre_x(lensrt.Scene(path)) < 0.4
+    assert centre_x(lensrt.Scene(path, time=2.0)) > 0.6
+    assert abs(centre_x(lensrt.Scene(path, time=1.0, animation="slide")) - 0.5) < 0.05
+    with pytest.raises(ValueError, match="has no animation 'walk'"):
+        lensrt.Scene(path, animation="walk")
