@@ -3,9 +3,11 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <optional>
 
 #include "api/render_job.h"
 #include "api/render_options.h"
+#include "render/adaptive_sampling.h"
 
 namespace lensrt {
 
@@ -26,5 +28,15 @@ SceneOptions sceneOptions(const SceneArgs& args, bool quiet);
 void addEnvironmentOptions(CLI::App& command, EnvironmentArgs& args);
 // --allow-external-files (or LENSRT_ALLOW_EXTERNAL_FILES=1) and --max-texture-memory MIB.
 void addSceneAccessOptions(CLI::App& command, SceneAccessArgs& args);
+
+// --noise-threshold E and --min-spp N (adaptive sampling; --spp is then the most).
+struct AdaptiveArgs {
+  double noiseThreshold = 0;  // 0: not given, every pixel takes --spp samples
+  std::optional<int> minSpp;  // none: the default
+};
+void addAdaptiveOptions(CLI::App& command, AdaptiveArgs& args);
+// The adaptive sampling they ask for (none without --noise-threshold);
+// UsageError when --min-spp is above --spp.
+std::optional<AdaptiveSampling> adaptiveSampling(const AdaptiveArgs& args, int spp);
 
 }  // namespace lensrt
