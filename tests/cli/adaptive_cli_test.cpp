@@ -92,7 +92,7 @@ TEST(AdaptiveCli, ThreadsTilesMergeAndResumeKeepTheBits) {
   // Tiles merged.
   std::vector<std::string> merge{"merge", "-q", "-o", (dir / "merged.exr").string()};
   for (int i = 0; i < 3; ++i) {
-    const std::string part = (dir / ("t" + std::to_string(i) + ".exr")).string();
+    const std::string part = (dir / (std::to_string(i) + "of3.exr")).string();
     const RunResult r = runLensrt(adaptiveArgs(part, {"--tile", std::to_string(i) + "/3"}));
     ASSERT_EQ(r.status, 0) << r.err;
     merge.push_back(part);
