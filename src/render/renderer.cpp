@@ -123,7 +123,10 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
       }
     }
     blocked.fetch_add(tileBlocked, std::memory_order_relaxed);
-    if (progress) progress->add(tileSamples + tileSkipped);
+    if (progress) {
+      progress->add(tileSamples);
+      progress->skip(tileSkipped);
+    }
   };
 
   const int threads = settings.threads > 0 ? settings.threads : tbb::task_arena::automatic;
