@@ -101,6 +101,8 @@ class Scene:
         sensor: _Sensor = "full-frame",
         res: tuple[int, int] | int | str | None = None,
         spp: int = 16,
+        noise_threshold: float | None = None,
+        min_spp: int | None = None,
         seed: int = 0,
         aov: Sequence[str] | str = (),
         env: _Path | float | None = None,

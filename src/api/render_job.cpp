@@ -12,6 +12,7 @@
 #include "core/constants.h"
 #include "core/error.h"
 #include "image/image_io.h"
+#include "image/spp_channel.h"
 #include "render/light_level.h"
 #include "render/progress.h"
 #include "render/render_identity.h"
@@ -205,13 +206,20 @@ RenderJobResult RenderJob::renderPasses(const Camera& camera, const RenderSettin
 ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {
   std::string aovs;
   for (const std::string& c : filmChannels(settings.aovs)) aovs += (aovs.empty() ? "" : ",") + c;
+  // Adaptive sampling's settings decide which pixels stop (--spp does not:
+  // a render resumed to more samples continues the same decisions).
+  const std::string adaptive =
+      settings.adaptive ? fmt::format(" noise_threshold={} min_spp={}", settings.adaptive->noiseThreshold,
+                                      settings.adaptive->minSamples)
+                        : std::string();
   return {
       {"lensrt:scene_sha256", scene_->digest(frame_.environment.file)},
       {"lensrt:camera", camera.describe()},
       {"lensrt:settings",
        fmt::format(
-           "res={}x{} max_depth={} environment={} channels={} transport={}{}", width_, height_,
+           "res={}x{} max_depth={} environment={} channels={} transport={}{}{}", width_, height_,
            frame_.maxDepth, environment_->describe(), aovs, transportDescription(settings.filmResponse.get()),
+           adaptive,
            scene_->geometry().desc().pose.empty() ? std::string() : " " + scene_->geometry().desc().pose)},
       {"lensrt:seed", std::to_string(settings.seed)},
   };
@@ -233,6 +241,10 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& se
       {"lensrt:nan_samples", std::to_string(result.output.droppedSamples)},
       {"lensrt:camera_ray_efficiency", fmt::format("{:.4f}", result.output.cameraRayEfficiency())},
   };
+  if (const std::optional<std::string> spp = adaptiveSppSummary(out.image)) {
+    metadata["lensrt:spp"] = *spp;
+    metadata["lensrt:samples_done"] = std::to_string(out.samplesDone);
+  }
   if (!out.image.isWholeFrame())
     metadata["lensrt:region"] = PixelRegion{out.image.originX, out.image.originX + out.image.width,
                                             out.image.originY, out.image.originY + out.image.height}

@@ -1,5 +1,7 @@
 #include "api/render_options.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -130,6 +132,29 @@ AovSelection parseAovs(const std::vector<std::string>& names) {
       throw UsageError("--aov", "unknown AOV '" + n + "' (choose from depth, normal, albedo, variance)");
   }
   return a;
+}
+
+std::optional<AdaptiveSampling> adaptiveSampling(double noiseThreshold, std::optional<int> minSpp, int spp) {
+  if (noiseThreshold == 0) {
+    if (minSpp) throw UsageError("--min-spp", "needs --noise-threshold (adaptive sampling)");
+    return std::nullopt;
+  }
+  if (!(noiseThreshold > 0) || !std::isfinite(noiseThreshold))
+    throw UsageError(
+        "--noise-threshold",
+        fmt::format("expected a number > 0 (the relative standard error at which a pixel stops), "
+                    "got {}",
+                    noiseThreshold));
+  AdaptiveSampling adaptive;
+  adaptive.noiseThreshold = noiseThreshold;
+  // The default minimum is at most --spp: --spp 8 alone asks for no more.
+  adaptive.minSamples = minSpp.value_or(std::min(adaptive.minSamples, spp));
+  if (adaptive.minSamples < 1)
+    throw UsageError("--min-spp", fmt::format("expected at least 1 sample, got {}", adaptive.minSamples));
+  if (adaptive.minSamples > spp)
+    throw UsageError("--min-spp", fmt::format("{} is above --spp {} (the most samples a pixel takes)",
+                                              adaptive.minSamples, spp));
+  return adaptive;
 }
 
 }  // namespace lensrt

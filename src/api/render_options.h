@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/vec.h"
+#include "render/adaptive_sampling.h"
 #include "render/film.h"
 #include "scene/scene_file_access.h"
 
@@ -51,6 +52,12 @@ struct SceneAccessArgs {
 SceneReadLimits sceneReadLimits(const SceneAccessArgs& args);
 
 AovSelection parseAovs(const std::vector<std::string>& names);
+
+// Adaptive sampling from --noise-threshold (0: not given) and --min-spp
+// (none: the default 16, or --spp when fewer) with --spp as the most: none without a threshold;
+// UsageError for a threshold <= 0 or not finite, a --min-spp without a
+// threshold, or one below 1 or above --spp.
+std::optional<AdaptiveSampling> adaptiveSampling(double noiseThreshold, std::optional<int> minSpp, int spp);
 
 // "" when `text` is a valid --res / --env value, else why not (for CLI11 checks).
 std::string checkResolution(const std::string& text);

@@ -44,6 +44,7 @@ struct CompareArgs {
   SceneArgs frame;  // the scene file and its frame
   std::string outputDir;
   int spp = 16;
+  AdaptiveArgs adaptive;
   int threads = 0;
   std::uint64_t seed = 0;
   int tileSize = 16;
@@ -107,6 +108,13 @@ double commonHeatmapScale(const std::vector<std::vector<float>>& errors) {
   return all[k] > 0 ? double(all[k]) : 1.0;
 }
 
+// A contact sheet cell's samples: the fixed count, or the mean of adaptive sampling's.
+std::string sppLabel(const RenderOutput& out) {
+  const std::uint64_t pixels = std::uint64_t(out.image.width) * std::uint64_t(out.image.height);
+  if (out.image.channelIndex("spp") < 0 || pixels == 0) return std::to_string(out.samplesDone);
+  return fmt::format("mean {:.1f}", double(out.cameraSamples) / double(pixels));
+}
+
 int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   // Under MPI every rank renders each model (rank 0 handing out strips);
   // rank 0 alone speaks and writes the directory.
@@ -123,6 +131,8 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   const SceneOptions sceneOptions = lensrt::sceneOptions(args.frame, args.quiet);
   RenderSettings settings;
   settings.samplesPerPixel = args.spp;
+  settings.adaptive = adaptiveSampling(args.adaptive, args.spp);
+  settings.aovs.spp = settings.adaptive.has_value();
   settings.seed = args.seed;
   settings.threads = args.threads;
   settings.tileSize = args.tileSize;
@@ -199,7 +209,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
          {kModels[i],
           fmt::format("f={:.4g}mm {} {}", info.focalLengthMm,
                       info.fNumber > 0 ? fmt::format("f/{:.3g}", info.fNumber) : "no aperture", focus),
-          fmt::format("{} spp, {:.2f} s, rays {:.1f}%", args.spp, results[i].seconds,
+          fmt::format("{} spp, {:.2f} s, rays {:.1f}%", sppLabel(results[i].output), results[i].seconds,
                       100.0 * results[i].output.cameraRayEfficiency())}});
   }
   writeImage(dir / "contact-sheet.png", makeContactSheet(cells, 2), {});
@@ -226,6 +236,9 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
         {"render_seconds", results[i].seconds},
         {"camera_ray_efficiency", results[i].output.cameraRayEfficiency()},
         {"nan_samples", results[i].output.droppedSamples},
+        {"mean_spp",
+         double(results[i].output.cameraSamples) /
+             double(std::max<std::uint64_t>(1, std::uint64_t(image.width) * std::uint64_t(image.height)))},
         {"mean",
          {{"luminance", numberOrNull(meanLuminance(image))},
           {"R", numberOrNull(channelMean(image, "R"))},
@@ -265,6 +278,10 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
         {"width", job.width()},
         {"height", job.height()},
         {"spp", args.spp},
+        {"noise_threshold",
+         settings.adaptive ? nlohmann::json(settings.adaptive->noiseThreshold) : nlohmann::json(nullptr)},
+        {"min_spp",
+         settings.adaptive ? nlohmann::json(settings.adaptive->minSamples) : nlohmann::json(nullptr)},
         {"seed", args.seed},
         {"max_depth", args.frame.maxDepth},
         {"environment", job.environmentDescription()}}},
@@ -296,9 +313,11 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("-o,--output", args->outputDir,
                   "output directory, created (with its missing parents) if missing, e.g. -o out/cmp")
       ->required();
-  cmd->add_option("--spp", args->spp, "samples per pixel for every model (>= 1), e.g. --spp 64")
+  cmd->add_option("--spp", args->spp,
+                  "samples per pixel for every model (>= 1; with --noise-threshold, the most), e.g. --spp 64")
       ->check(CLI::Range(1, 1 << 24))
       ->capture_default_str();
+  addAdaptiveOptions(*cmd, args->adaptive);
   cmd->add_option("--res", args->frame.resolution,
                   "image size in pixels WIDTHxHEIGHT, e.g. --res 640x360 (default 640 wide, height from the "
                   "glTF camera's aspect ratio or 360)")

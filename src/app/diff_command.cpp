@@ -44,7 +44,8 @@ constexpr const char* kDescription =
     "gain tests at a quarter each; any failing FAILS:\n"
     " count test: per pixel and channel t = |A-B| / sqrt(varA + varB +\n"
     "   (floor*(|A|+|B|)/2)^2) against the two-sided Student-t quantile (nu =\n"
-    "   min spp - 1, spp from lensrt:spp metadata or --spp; normal if unknown)\n"
+    "   min spp - 1, spp from lensrt:spp metadata or --spp; normal if unknown;\n"
+    "   an adaptive render's spp channel gives each pixel its own)\n"
     "   that fails an equivalent pixel with probability --pixel-alpha\n"
     "   (Sidak-split over R,G,B); pixels with zero variance in both images use\n"
     "   the --fail absolute threshold. Fails when the failing pixels exceed the\n"
@@ -197,7 +198,8 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
       ->capture_default_str()
       ->check(numberFrom(0, "a fraction of the pixel value"));
   sub->add_option("--spp", o->comparison.spp,
-                  "Noise-aware: samples per pixel of both (default: lensrt:spp metadata)")
+                  "Noise-aware: samples per pixel of both (default: lensrt:spp metadata; an spp "
+                  "channel, from adaptive sampling, overrides it per pixel)")
       ->check(integerIn(1, 1 << 24, "samples per pixel"));
   sub->add_flag("--json", o->json, "Print all figures as JSON");
   return [o]() { return runDiff(*o); };

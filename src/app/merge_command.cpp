@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "image/image_io.h"
 #include "image/image_merge.h"
+#include "image/spp_channel.h"
 #include "render/render_identity.h"
 
 namespace lensrt {
@@ -49,18 +50,21 @@ int runMerge(const MergeArgs& args) {
   }
   // Same render: identity and samples per pixel (a checkpoint of a part is
   // not a finished part).
+  // Adaptive parts differ in their pixels' samples: their passes must agree.
+  const auto sppDone = [&](std::size_t i) -> const std::string& {
+    return isAdaptiveSpp(metas[i]["lensrt:spp"]) ? metas[i]["lensrt:samples_done"] : metas[i]["lensrt:spp"];
+  };
   for (std::size_t i = 1; i < parts.size(); ++i) {
     if (const std::string diff = renderIdentityDifference(metas[i], metas[0]); !diff.empty())
       throw InputError(args.parts[i], "is not a part of the render " + args.parts[0] + " is from: " + diff);
-    if (metas[i]["lensrt:spp"] != metas[0]["lensrt:spp"])
-      throw InputError(args.parts[i], fmt::format("has {} spp, {} has {}", metas[i]["lensrt:spp"],
-                                                  args.parts[0], metas[0]["lensrt:spp"]));
+    if (sppDone(i) != sppDone(0))
+      throw InputError(args.parts[i],
+                       fmt::format("has {} spp, {} has {}", sppDone(i), args.parts[0], sppDone(0)));
   }
   for (std::size_t i = 0; i < parts.size(); ++i)
-    if (const auto r = metas[i].find("lensrt:spp_requested");
-        r != metas[i].end() && r->second != metas[i]["lensrt:spp"])
-      throw InputError(args.parts[i], fmt::format("is an unfinished render ({} of {} spp)",
-                                                  metas[i]["lensrt:spp"], r->second));
+    if (const auto r = metas[i].find("lensrt:spp_requested"); r != metas[i].end() && r->second != sppDone(i))
+      throw InputError(args.parts[i],
+                       fmt::format("is an unfinished render ({} of {} spp)", sppDone(i), r->second));
   Image merged;
   try {
     merged = mergeImageParts(parts, args.parts);
@@ -92,6 +96,7 @@ int runMerge(const MergeArgs& args) {
     meta["lensrt:camera_ray_efficiency"] = fmt::format("{:.4f}", 1.0 - double(blocked) / double(samples));
   meta["lensrt:render_seconds"] = fmt::format("{:.3f}", seconds);
   meta["lensrt:merged_parts"] = std::to_string(parts.size());
+  if (const std::optional<std::string> spp = adaptiveSppSummary(merged)) meta["lensrt:spp"] = *spp;
   writeOutputImage(args.output, merged, meta);
   if (!args.quiet)
     fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} parts)\n", args.output, merged.width, merged.height,

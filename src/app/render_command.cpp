@@ -25,6 +25,7 @@ struct RenderArgs {
   SceneArgs frame;  // the scene file and its frame
   std::string output;
   int spp = 16;
+  AdaptiveArgs adaptive;
   int threads = 0;
   std::uint64_t seed = 0;
   std::vector<std::string> aovs;
@@ -68,6 +69,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   settings.threads = args.threads;
   settings.tileSize = args.tileSize;
   settings.aovs = parseAovs(args.aovs);
+  settings.adaptive = adaptiveSampling(args.adaptive, args.spp);
+  settings.aovs.spp = settings.adaptive.has_value();
   job.output = args.output;
   job.raw = args.raw;
   if (!args.ocioDisplay.empty() || !args.ocioView.empty())
@@ -111,9 +114,11 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
       "curve, e.g. --ocio-display sRGB (default with --ocio-view: the config's default display)");
   cmd->add_option("--ocio-view", args->ocioView,
                   "that display's view, e.g. --ocio-view Film (default: the display's default view)");
-  cmd->add_option("--spp", args->spp, "samples per pixel (>= 1), e.g. --spp 64")
+  cmd->add_option("--spp", args->spp,
+                  "samples per pixel (>= 1; with --noise-threshold, the most a pixel takes), e.g. --spp 64")
       ->check(integerIn(1, 1 << 24, "samples per pixel"))
       ->capture_default_str();
+  addAdaptiveOptions(*cmd, args->adaptive);
   cmd->add_option(
          "--res", args->frame.resolution,
          "image size in pixels WIDTHxHEIGHT, e.g. --res 640x360; a WIDTH alone takes the height from the "

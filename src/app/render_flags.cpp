@@ -76,4 +76,22 @@ void addSceneAccessOptions(CLI::App& cmd, SceneAccessArgs& args) {
       ->capture_default_str();
 }
 
+void addAdaptiveOptions(CLI::App& cmd, AdaptiveArgs& args) {
+  CLI::Option* threshold =
+      cmd.add_option("--noise-threshold", args.noiseThreshold,
+                     "adaptive sampling: a pixel stops once the relative standard error of its mean is "
+                     "below this (dark pixels: of a floor of 0.05), between --min-spp and --spp samples, "
+                     "e.g. --noise-threshold 0.01")
+          ->check(numberFrom(0, "the relative standard error at which a pixel stops", true));
+  cmd.add_option("--min-spp", args.minSpp,
+                 "adaptive sampling: samples every pixel takes before it may stop (default 16), e.g. "
+                 "--min-spp 32")
+      ->check(integerIn(1, 1 << 24, "samples per pixel"))
+      ->needs(threshold);
+}
+
+std::optional<AdaptiveSampling> adaptiveSampling(const AdaptiveArgs& args, int spp) {
+  return lensrt::adaptiveSampling(args.noiseThreshold, args.minSpp, spp);
+}
+
 }  // namespace lensrt

@@ -8,6 +8,7 @@
 
 #include "api/render_job.h"
 #include "api/render_options.h"
+#include "render/adaptive_sampling.h"
 
 namespace lensrt {
 
@@ -34,5 +35,15 @@ void addEnvironmentOptions(CLI::App& command, EnvironmentArgs& args);
 void addSceneAccessOptions(CLI::App& command, SceneAccessArgs& args);
 // --time SECONDS, --frame N, --fps F and --animation NAME|INDEX.
 void addAnimationOptions(CLI::App& command, SceneArgs& args);
+
+// --noise-threshold E and --min-spp N (adaptive sampling; --spp is then the most).
+struct AdaptiveArgs {
+  double noiseThreshold = 0;  // 0: not given, every pixel takes --spp samples
+  std::optional<int> minSpp;  // none: the default
+};
+void addAdaptiveOptions(CLI::App& command, AdaptiveArgs& args);
+// The adaptive sampling they ask for (none without --noise-threshold);
+// UsageError when --min-spp is above --spp.
+std::optional<AdaptiveSampling> adaptiveSampling(const AdaptiveArgs& args, int spp);
 
 }  // namespace lensrt

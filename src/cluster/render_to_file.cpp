@@ -20,6 +20,7 @@
 #include "cluster/interrupt.h"
 #include "core/error.h"
 #include "image/image_io.h"
+#include "image/spp_channel.h"
 #include "render/progress.h"
 
 namespace lensrt {
@@ -210,7 +211,8 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   }
   if (!args.quiet)
     fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output,
-               result.output.image.width, result.output.image.height, settings.samplesPerPixel,
+               result.output.image.width, result.output.image.height,
+               adaptiveSppSummary(result.output.image).value_or(std::to_string(settings.samplesPerPixel)),
                result.seconds, camera->describe());
   return 0;
 }

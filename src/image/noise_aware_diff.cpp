@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "image/statistics.h"
@@ -79,10 +80,38 @@ NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAware
   const auto ia = colourAndVarianceChannels(a), ib = colourAndVarianceChannels(b);
 
   NoiseAwareReport r;
-  const int minSamples = std::min(o.samplesA, o.samplesB);
-  r.degreesOfFreedom = minSamples > 1 ? double(minSamples - 1) : 0.0;
+  // Adaptive renders say each pixel's samples in their spp channel: a pixel
+  // is held to the t quantile of its own degrees of freedom.
+  const int sppA = a.channelIndex("spp"), sppB = b.channelIndex("spp");
+  const bool perPixel = sppA >= 0 || sppB >= 0;
+  const auto pixelSamples = [&](int x, int y) {
+    const int na = sppA >= 0 ? int(a.at(x, y, sppA)) : o.samplesA;
+    const int nb = sppB >= 0 ? int(b.at(x, y, sppB)) : o.samplesB;
+    return std::min(na, nb);
+  };
+  int minSamples = std::min(o.samplesA, o.samplesB);
+  bool sameSamples = o.samplesA > 0 && o.samplesA == o.samplesB;
+  if (perPixel) {
+    minSamples = std::numeric_limits<int>::max();
+    sameSamples = sppA >= 0 && sppB >= 0;
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x) {
+        minSamples = std::min(minSamples, pixelSamples(x, y));
+        sameSamples = sameSamples && a.at(x, y, sppA) == b.at(x, y, sppB);
+      }
+  }
+  const auto dof = [](int samples) { return samples > 1 ? double(samples - 1) : 0.0; };
+  r.degreesOfFreedom = dof(minSamples);  // the fewest: the gain test's shrink is then conservative
   const double channelAlpha = -std::expm1(std::log1p(-o.pixelFalseAlarmRate) / 3.0);  // Sidak
   r.criticalValue = twoSidedCriticalValue(channelAlpha, r.degreesOfFreedom);
+  std::map<int, double> criticalBySamples;  // adaptive renders have a few dozen distinct counts
+  const auto criticalAt = [&](int x, int y) {
+    if (!perPixel) return r.criticalValue;
+    const int n = pixelSamples(x, y);
+    const auto it = criticalBySamples.find(n);
+    if (it != criticalBySamples.end()) return it->second;
+    return criticalBySamples[n] = twoSidedCriticalValue(channelAlpha, dof(n));
+  };
   r.maxChannel = std::string(kColour[0]);  // not assign(const char*): GCC 12's false -Wrestrict (bug 105329)
   std::array<double, 3> fluxDifference{}, fluxVariance{}, fluxTotal{};
   // The gain test's sums: sum(m d / v) and sum(m^2 / v).
@@ -98,6 +127,7 @@ NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAware
         continue;
       }
       bool fails = false;
+      const double critical = criticalAt(x, y);
       for (int c = 0; c < 3; ++c) {
         fluxDifference[c] += p.difference[c];
         fluxVariance[c] += p.variance[c];
@@ -107,7 +137,7 @@ NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAware
           gainNorm[c] += p.mean[c] * p.mean[c] / p.variance[c];
         }
         if (p.t[c] > r.maxT) r.maxT = p.t[c], r.maxX = x, r.maxY = y, r.maxChannel = kColour[c];
-        fails = fails || p.t[c] > r.criticalValue;
+        fails = fails || p.t[c] > critical;
       }
       r.statisticalFailures += fails;
     }
@@ -122,7 +152,7 @@ NoiseAwareReport noiseAwareDiff(const Image& a, const Image& b, const NoiseAware
   const bool countPasses = r.failingPixels <= r.allowedFailures;
 
   r.fluxCriticalValue = twoSidedCriticalValue(beta / 12, 0.0);
-  r.gainDecides = o.samplesA > 0 && o.samplesA == o.samplesB;
+  r.gainDecides = sameSamples;
   bool fluxPasses = true;
   for (int c = 0; c < 3; ++c) {
     const double sd = std::sqrt(fluxVariance[c]);

@@ -41,6 +41,11 @@
 //    skew of Monte Carlo noise biases it, and the test only reports); it is
 //    tested two-sided at beta/12 per channel (the golden suite measures the
 //    false-alarm rate, tools/measure-false-alarms).
+// An image with an "spp" channel (adaptive sampling: the samples each pixel
+// took) has its own samples per pixel: the count test holds each pixel to
+// the quantile for its own degrees of freedom, the gain test decides only
+// when both images took the same samples in every pixel, and the degrees of
+// freedom reported are the fewest.
 // Both tests assume independent pixels (per-pixel sample streams, no
 // filter splatting across pixels or denoising).
 #pragma once

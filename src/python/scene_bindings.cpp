@@ -148,6 +148,7 @@ class PyScene {
                                                    "fstop",         "focus",
                                                    "focus_pixel",   "sensor",
                                                    "res",           "spp",
+                                                   "min_spp",       "noise_threshold",
                                                    "seed",          "aov",
                                                    "env",           "env_rotate",
                                                    "env_intensity", "max_depth",
@@ -233,10 +234,23 @@ class PyScene {
     RenderSettings& s = request.settings;
     if (const py::object v = get("spp"); !v.is_none())
       s.samplesPerPixel = int(toInteger(v, "spp", 1, 1 << 24));
+    double noiseThreshold = 0;
+    if (const py::object v = get("noise_threshold"); !v.is_none()) {
+      noiseThreshold = toDouble(v, "noise_threshold");
+      if (!(noiseThreshold > 0))
+        throw UsageError("--noise-threshold",
+                         fmt::format("expected a number > 0 (the relative standard error at which a pixel "
+                                     "stops), got {}",
+                                     noiseThreshold));
+    }
+    std::optional<int> minSpp;
+    if (const py::object v = get("min_spp"); !v.is_none()) minSpp = int(toInteger(v, "min_spp", 1, 1 << 24));
+    s.adaptive = adaptiveSampling(noiseThreshold, minSpp, s.samplesPerPixel);
     if (const py::object v = get("seed"); !v.is_none())
       s.seed = std::uint64_t(toInteger(v, "seed", 0, std::numeric_limits<long long>::max()));
     if (const py::object v = get("threads"); !v.is_none()) s.threads = int(toInteger(v, "threads", 0, 4096));
     s.aovs = parseAovs(toTextList(get("aov"), "aov"));
+    s.aovs.spp = s.adaptive.has_value();
     s.region = toCrop(get("crop"));
     const py::object callback = get("progress");
     for (const std::string& name : known)
@@ -360,7 +374,8 @@ index to play one of them (None: all).)doc")
       .def("__repr__", [](const PyScene& s) { return "lensrt.Scene('" + s.file() + "')"; })
       .def("render", &PyScene::render,
            R"doc(render(camera="pinhole", lens=None, fstop=None, focus="auto", focus_pixel=None,
-       sensor="full-frame", res=None, spp=16, seed=0, aov=(), env=None, env_rotate=0,
+       sensor="full-frame", res=None, spp=16, noise_threshold=None, min_spp=None, seed=0,
+       aov=(), env=None, env_rotate=0,
        env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
        exposure="normalized", shutter=None, iso=None, dispersion="on", coatings=None,
@@ -379,7 +394,11 @@ settings and seed. Keywords only, each the flag of the same name:
   sensor: "full-frame", "aps-c", "mft", "1in", "WxH" in mm, or a (w, h) pair in mm.
   res: (width, height) in pixels, or a width (height from the camera's aspect);
     None: 640 wide.
-  spp: samples per pixel (>= 1). seed: random seed (>= 0).
+  spp: samples per pixel (>= 1); with noise_threshold, the most a pixel takes.
+  noise_threshold: adaptive sampling, a pixel stops once the relative standard
+    error of its mean is below this (e.g. 0.01); the image gains an "spp"
+    channel. min_spp: the samples every pixel takes first (default 16).
+  seed: random seed (>= 0).
   aov: extra channels, a sequence or comma-separated string of "depth"
     (metres), "normal", "albedo", "variance" (of the pixel mean).
   env: None (the scene's light, else a default sky), "none", "constant:V",

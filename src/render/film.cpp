@@ -1,5 +1,6 @@
 #include "render/film.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -11,6 +12,7 @@ std::vector<std::string> filmChannels(const AovSelection& aovs) {
   if (aovs.normal) c.insert(c.end(), {"normal.X", "normal.Y", "normal.Z"});
   if (aovs.albedo) c.insert(c.end(), {"albedo.R", "albedo.G", "albedo.B"});
   if (aovs.variance) c.insert(c.end(), {"variance.R", "variance.G", "variance.B"});
+  if (aovs.spp) c.push_back("spp");
   return c;
 }
 
@@ -37,6 +39,26 @@ void PixelAccumulator::addBlocked() {
   ++count_;
 }
 
+namespace {
+// Unbiased sample variance over n (the variance of the mean), clamped
+// against cancellation; 0 below 2 samples.
+double varianceOfMean(double sum, double sumSq, double n) {
+  if (n <= 1) return 0.0;
+  const double mean = sum / n;
+  return std::max(0.0, (sumSq - n * mean * mean) / (n - 1)) / n;
+}
+}  // namespace
+
+PixelAccumulator::MeanAndError PixelAccumulator::meanAndError() const {
+  MeanAndError m;
+  const double n = double(count_);
+  for (int k = 0; k < 3; ++k) {
+    m.mean[k] = n > 0 ? sum_[k] / n : 0.0;
+    m.standardError[k] = std::sqrt(varianceOfMean(sum_[k], sumSq_[k], n));
+  }
+  return m;
+}
+
 void PixelAccumulator::write(const AovSelection& aovs, float* out) const {
   const double n = double(count_);
   double mean[3] = {0, 0, 0};
@@ -55,11 +77,8 @@ void PixelAccumulator::write(const AovSelection& aovs, float* out) const {
   if (aovs.albedo)
     for (int k = 0; k < 3; ++k) out[c++] = n > 0 ? float(albedo_[k] / n) : 0.0f;
   if (aovs.variance)
-    for (int k = 0; k < 3; ++k) {
-      // Unbiased sample variance over n, clamped against cancellation.
-      const double v = n > 1 ? std::max(0.0, (sumSq_[k] - n * mean[k] * mean[k]) / (n - 1)) / n : 0.0;
-      out[c++] = float(v);
-    }
+    for (int k = 0; k < 3; ++k) out[c++] = float(varianceOfMean(sum_[k], sumSq_[k], n));
+  if (aovs.spp) out[c++] = float(samplesTaken());
 }
 
 namespace {

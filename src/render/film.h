@@ -13,6 +13,7 @@
 //  - albedo.R/G/B: mean first-hit base colour over all samples (a miss adds 0).
 //  - variance.R/G/B: variance of the pixel's mean estimate, i.e. the unbiased
 //    sample variance divided by the sample count; 0 with a single sample.
+//  - spp: the samples the pixel took (adaptive sampling stops some early).
 // A sample with a NaN or infinite radiance is dropped (not part of any mean)
 // and counted.
 #pragma once
@@ -32,6 +33,7 @@ struct AovSelection {
   bool normal = false;
   bool albedo = false;
   bool variance = false;
+  bool spp = false;
 };
 
 std::vector<std::string> filmChannels(const AovSelection& aovs);
@@ -42,6 +44,15 @@ class PixelAccumulator {
   void add(const PathSample& s, float weight);
   void addBlocked();
   std::uint64_t droppedSamples() const { return dropped_; }
+  // Every sample added, dropped ones included: the index of the next one.
+  std::uint64_t samplesTaken() const { return count_ + dropped_; }
+  // Per channel, the mean so far and the standard error of that mean (the
+  // square root of the variance AOV's value); errors are 0 below 2 samples.
+  struct MeanAndError {
+    double mean[3] = {0, 0, 0};
+    double standardError[3] = {0, 0, 0};
+  };
+  MeanAndError meanAndError() const;
   // Writes this pixel's channels (layout of filmChannels) to `out`.
   void write(const AovSelection& aovs, float* out) const;
 

@@ -13,7 +13,8 @@ constexpr std::array<char, 8> kMagic{'L', 'R', 'T', 'S', 'U', 'M', 'S', '1'};
 constexpr std::size_t kHeaderBytes = kMagic.size() + 6 * 4 + 8;
 
 std::int32_t aovBits(const AovSelection& a) {
-  return (a.depth ? 1 : 0) | (a.normal ? 2 : 0) | (a.albedo ? 4 : 0) | (a.variance ? 8 : 0);
+  return (a.depth ? 1 : 0) | (a.normal ? 2 : 0) | (a.albedo ? 4 : 0) | (a.variance ? 8 : 0) |
+         (a.spp ? 16 : 0);
 }
 
 }  // namespace
@@ -26,6 +27,12 @@ FilmState::FilmState(const PixelRegion& region, const AovSelection& aovs)
 std::uint64_t FilmState::droppedSamples() const {
   std::uint64_t n = 0;
   for (const PixelAccumulator& p : pixels_) n += p.droppedSamples();
+  return n;
+}
+
+std::uint64_t FilmState::samplesTaken() const {
+  std::uint64_t n = 0;
+  for (const PixelAccumulator& p : pixels_) n += p.samplesTaken();
   return n;
 }
 
@@ -74,13 +81,14 @@ FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
   std::memcpy(&blocked, p, 8);
   p += 8;
   const PixelRegion region{v[0], v[1], v[2], v[3]};
-  if (region.empty() || region.x0 < 0 || region.y0 < 0 || v[4] < 0 || v[5] < 0 || v[5] > 15)
+  if (region.empty() || region.x0 < 0 || region.y0 < 0 || v[4] < 0 || v[5] < 0 || v[5] > 31)
     throw std::invalid_argument("the running-sums file's header is corrupt");
   AovSelection aovs;
   aovs.depth = v[5] & 1;
   aovs.normal = v[5] & 2;
   aovs.albedo = v[5] & 4;
   aovs.variance = v[5] & 8;
+  aovs.spp = v[5] & 16;
   const std::uint64_t expected = kHeaderBytes + region.pixelCount() * PixelAccumulator::kStateBytes;
   if (bytes.size() != expected)
     throw std::invalid_argument("the running-sums file has " + std::to_string(bytes.size()) +

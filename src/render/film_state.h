@@ -29,6 +29,9 @@ class FilmState {
   }
 
   std::uint64_t droppedSamples() const;
+  // The camera samples of every pixel: region pixels x samplesDone(), or
+  // fewer when adaptive sampling stopped pixels early.
+  std::uint64_t samplesTaken() const;
   std::uint64_t blockedCameraRays = 0;
 
   // The means so far: channels per filmChannels(aovs), the region's size,

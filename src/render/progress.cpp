@@ -54,11 +54,13 @@ void Progress::run() {
 }
 
 void Progress::print(bool final) {
-  const std::uint64_t done = std::min(done_.load(std::memory_order_relaxed), total_);
+  const std::uint64_t taken = done_.load(std::memory_order_relaxed);
+  const std::uint64_t done = std::min(taken + skipped_.load(std::memory_order_relaxed), total_);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fraction = double(done) / double(total_);
-  const double rate = elapsed > 0 ? double(done) / elapsed : 0.0;
-  const double eta = rate > 0 ? double(total_ - done) / rate : 0.0;
+  const double rate = elapsed > 0 ? double(taken) / elapsed : 0.0;
+  const double progressRate = elapsed > 0 ? double(done) / elapsed : 0.0;
+  const double eta = progressRate > 0 ? double(total_ - done) / progressRate : 0.0;
   const std::string stats = fmt::format("{:5.1f}%  {:.3g} Msamples/s  elapsed {}  ETA {}", 100 * fraction,
                                         rate * 1e-6, clock(elapsed), clock(eta));
   if (style_ == Style::Terminal) {

@@ -25,6 +25,9 @@ class Progress {
   Progress& operator=(const Progress&) = delete;
 
   void add(std::uint64_t samples) { done_.fetch_add(samples, std::memory_order_relaxed); }
+  // Samples of the total that will not be taken (adaptive sampling stopped
+  // their pixels): they advance the bar and the ETA, not the sample rate.
+  void skip(std::uint64_t samples) { skipped_.fetch_add(samples, std::memory_order_relaxed); }
   void finish();
 
  private:
@@ -35,6 +38,7 @@ class Progress {
   Style style_;
   std::FILE* stream_;
   std::atomic<std::uint64_t> done_{0};
+  std::atomic<std::uint64_t> skipped_{0};
   std::chrono::steady_clock::time_point start_;
   std::mutex mutex_;
   std::condition_variable wake_;

@@ -35,16 +35,17 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   // that traces wavelengths (dispersion) follows each sample's hero.
   const FilmResponse* response = settings.filmResponse.get();
   const bool dispersive = camera.tracesWavelengths();
+  const std::optional<AdaptiveSampling>& adaptive = settings.adaptive;
 
   const auto renderTile = [&](int t) {
     const int x0 = region.x0 + (t % tilesX) * tile, y0 = region.y0 + (t / tilesX) * tile;
     const int x1 = std::min(x0 + tile, region.x1), y1 = std::min(y0 + tile, region.y1);
-    std::uint64_t tileBlocked = 0;
+    std::uint64_t tileBlocked = 0, tileSamples = 0, tileSkipped = 0;
     // Camera rays are made kCameraBatch samples per call (the samples of a
     // tile row, pixel by pixel, in order), so a camera can trace them together
     // (the full lens does); each still depends only on (seed, pixel, sample index).
-    const std::uint64_t rowSamples = std::uint64_t(x1 - x0) * spp;
-    const std::size_t batch = std::size_t(std::min<std::uint64_t>(kCameraBatch, rowSamples));
+    const std::size_t batch =
+        std::size_t(std::min<std::uint64_t>(kCameraBatch, std::uint64_t(x1 - x0) * spp));
     std::vector<CameraSample> samples(batch);
     std::vector<std::optional<CameraRay>> rays(batch);
     std::vector<SampledWavelengths> lambdas(batch, SampledWavelengths::rgb());
@@ -55,11 +56,24 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
     // table is as long as a path's dimensions, up to a cap for deep paths).
     const std::uint32_t dimensions = std::min(integrator.sampleDimensions(), kSeedTableDimensions);
     std::vector<PixelSeeds> pixelSeeds(batch / spp + 2);
+    // The row's pixels that take this pass's samples: all of them, or with
+    // adaptive sampling those that have not converged.
+    std::vector<int> columns;
+    columns.reserve(std::size_t(x1 - x0));
     for (int y = y0; y < y1; ++y) {
+      columns.clear();
+      for (int x = x0; x < x1; ++x) {
+        if (!adaptive || keepsSampling(*adaptive, state.pixel(x, y), int(firstSample)))
+          columns.push_back(x);
+        else if (state.pixel(x, y).samplesTaken() == firstSample)  // stops here: the bar counts what it skips
+          tileSkipped += std::uint64_t(std::max(0, settings.samplesPerPixel - int(firstSample)));
+      }
+      const std::uint64_t rowSamples = std::uint64_t(columns.size()) * spp;
+      tileSamples += rowSamples;
       for (std::uint64_t first = 0; first < rowSamples; first += batch) {
         const std::size_t n = std::size_t(std::min<std::uint64_t>(batch, rowSamples - first));
         const auto pixelOf = [&](std::uint64_t j) {
-          return std::uint64_t(y) * std::uint64_t(film.width) + std::uint64_t(x0) + j / spp;
+          return std::uint64_t(y) * std::uint64_t(film.width) + std::uint64_t(columns[j / spp]);
         };
         const auto sampleOf = [&](std::uint64_t j) { return firstSample + std::uint32_t(j % spp); };
         samplers.clear();
@@ -73,7 +87,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           const SampleBlock u = sampler.block(kDimFilm);
           const Vec2f offset = u.get2D(kDimFilm);
           CameraSample& cs = samples[k];
-          cs.film = {float(x0 + int(j / spp)) + offset.x, float(y) + offset.y};
+          cs.film = {float(columns[j / spp]) + offset.x, float(y) + offset.y};
           cs.lens = u.get2D(kDimLens);
           // The sampler's 1D stream is a scrambled van der Corput sequence in
           // the sample index: a pixel's wavelengths are stratified (any
@@ -95,7 +109,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
-          PixelAccumulator& acc = state.pixel(x0 + int(j / spp), y);
+          PixelAccumulator& acc = state.pixel(columns[j / spp], y);
           const std::optional<CameraRay>& cr = rays[k];
           if (!cr) {
             acc.addBlocked();
@@ -109,7 +123,10 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
       }
     }
     blocked.fetch_add(tileBlocked, std::memory_order_relaxed);
-    if (progress) progress->add(std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * spp);
+    if (progress) {
+      progress->add(tileSamples);
+      progress->skip(tileSkipped);
+    }
   };
 
   const int threads = settings.threads > 0 ? settings.threads : tbb::task_arena::automatic;
@@ -123,6 +140,18 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   state.setSamplesDone(int(lastSample));
 }
 
+// Samples [first, last), cut at the decision points of adaptive sampling,
+// where each pixel decides whether it goes on: whatever [first, last) a
+// caller asks for, every decision is taken at the same sample count.
+void renderSpan(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
+                FilmState& state, int first, int last, Progress* progress) {
+  while (first < last) {
+    const int end = settings.adaptive ? std::min(last, nextDecisionPoint(*settings.adaptive, first)) : last;
+    renderPass(camera, integrator, settings, state, std::uint32_t(first), std::uint32_t(end), progress);
+    first = end;
+  }
+}
+
 }  // namespace
 
 bool renderPasses(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
@@ -133,9 +162,7 @@ bool renderPasses(const Camera& camera, const Integrator& integrator, const Rend
                                 std::to_string(film.width) + "x" + std::to_string(film.height) + " frame");
   const int target = settings.samplesPerPixel;
   if (!control) {
-    if (state.samplesDone() < target)
-      renderPass(camera, integrator, settings, state, std::uint32_t(state.samplesDone()),
-                 std::uint32_t(target), progress);
+    renderSpan(camera, integrator, settings, state, state.samplesDone(), target, progress);
     return true;
   }
   // A stop is honoured after a pass, so the pass in flight (the first one
@@ -144,7 +171,7 @@ bool renderPasses(const Camera& camera, const Integrator& integrator, const Rend
   while (state.samplesDone() < target) {
     const int first = state.samplesDone(), last = std::min(target, first + passSpp);
     const auto start = std::chrono::steady_clock::now();
-    renderPass(camera, integrator, settings, state, std::uint32_t(first), std::uint32_t(last), progress);
+    renderSpan(camera, integrator, settings, state, first, last, progress);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (seconds * 2 < control->passSeconds && passSpp < (1 << 20)) passSpp *= 2;
     if (state.samplesDone() >= target) break;
@@ -158,7 +185,8 @@ RenderOutput renderOutput(const Camera& camera, const FilmState& state) {
   RenderOutput out;
   out.image = state.image(camera.film().width, camera.film().height);
   out.droppedSamples = state.droppedSamples();
-  out.cameraSamples = state.region().pixelCount() * std::uint64_t(state.samplesDone());
+  out.cameraSamples = state.samplesTaken();
+  out.samplesDone = state.samplesDone();
   out.blockedCameraRays = state.blockedCameraRays;
   return out;
 }
@@ -168,6 +196,8 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
   const FilmGeometry& film = camera.film();
   if (film.width <= 0 || film.height <= 0) throw std::invalid_argument("film size must be positive");
   if (settings.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+  if (settings.adaptive && !(settings.adaptive->noiseThreshold > 0 && settings.adaptive->minSamples >= 1))
+    throw std::invalid_argument("adaptive sampling needs a positive noise threshold and at least 1 sample");
   FilmState state(settings.region.value_or(PixelRegion::wholeFrame(film.width, film.height)), settings.aovs);
   renderPasses(camera, integrator, settings, state, nullptr, progress);
   return renderOutput(camera, state);

@@ -14,6 +14,7 @@
 
 #include "camera/camera.h"
 #include "image/image.h"
+#include "render/adaptive_sampling.h"
 #include "render/film.h"
 #include "render/film_response.h"
 #include "render/film_state.h"
@@ -25,7 +26,10 @@
 namespace lensrt {
 
 struct RenderSettings {
-  int samplesPerPixel = 16;  // the total to reach (a resumed render has done some)
+  int samplesPerPixel = 16;  // the total to reach (a resumed render has done some); adaptive: the most
+  // Stops converged pixels early (adaptive_sampling.h); none: every pixel
+  // takes samplesPerPixel, with the bits of a render before it existed.
+  std::optional<AdaptiveSampling> adaptive;
   std::uint64_t seed = 0;
   int threads = 0;  // 0: all cores
   int tileSize = 16;
@@ -38,7 +42,8 @@ struct RenderSettings {
 struct RenderOutput {
   Image image;  // channels per filmChannels(aovs), the region's size placed in camera.film()
   std::uint64_t droppedSamples = 0;     // NaN / infinite radiance
-  std::uint64_t cameraSamples = 0;      // width x height x spp
+  std::uint64_t cameraSamples = 0;      // width x height x spp (adaptive: the pixels' samples summed)
+  int samplesDone = 0;                  // the passes' samples per pixel (adaptive: the most a pixel took)
   std::uint64_t blockedCameraRays = 0;  // samples the optics blocked (vignetting)
   // Fraction of camera samples that left the lens into the scene.
   double cameraRayEfficiency() const {
@@ -66,7 +71,8 @@ struct PassControl {
 };
 
 // Adds samples [state.samplesDone(), settings.samplesPerPixel) to every
-// pixel of state.region(), in passes. Returns false when stopped early (the
+// pixel of state.region() (adaptive: to every pixel that keeps sampling, with
+// passes cut at the decision points), in passes. Returns false when stopped early (the
 // state then holds whole passes: every pixel has state.samplesDone() samples).
 // Without a control, one pass.
 bool renderPasses(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,

@@ -162,7 +162,26 @@ INSTANTIATE_TEST_SUITE_P(
                  {"--camera-node", "good.gltf", "nosuchcam"}},
         BadInput{
             "SceneIndexOutOfRange", {"@good.gltf", "--scene-index", "5"}, 2, {"--scene-index", "good.gltf"}},
-        BadInput{"SppNotANumber", {"@good.gltf", "--spp", "abc"}, 2, {"--spp", "positive integer", "'abc'"}}),
+        BadInput{"SppNotANumber", {"@good.gltf", "--spp", "abc"}, 2, {"--spp", "positive integer", "'abc'"}},
+        BadInput{
+            "ZeroNoiseThreshold", {"@good.gltf", "--noise-threshold", "0"}, 2, {"--noise-threshold", "> 0"}},
+        BadInput{
+            "NegativeNoiseThreshold", {"@good.gltf", "--noise-threshold", "-0.01"}, 2, {"--noise-threshold"}},
+        BadInput{"NoiseThresholdNotANumber",
+                 {"@good.gltf", "--noise-threshold", "low"},
+                 2,
+                 {"--noise-threshold", "'low'"}},
+        BadInput{"NoiseThresholdNaN", {"@good.gltf", "--noise-threshold", "nan"}, 2, {"--noise-threshold"}},
+        BadInput{"MinSppAboveSpp",
+                 {"@good.gltf", "--noise-threshold", "0.01", "--spp", "8", "--min-spp", "16"},
+                 2,
+                 {"--min-spp", "16 is above --spp 8"}},
+        BadInput{
+            "ZeroMinSpp", {"@good.gltf", "--noise-threshold", "0.01", "--min-spp", "0"}, 2, {"--min-spp"}},
+        BadInput{"MinSppWithoutThreshold",
+                 {"@good.gltf", "--min-spp", "4"},
+                 2,
+                 {"--min-spp", "--noise-threshold"}}),
     [](const auto& info) { return info.param.name; });
 
 TEST(RenderCli, UnwritableOutputIsRejectedBeforeRendering) {

@@ -9,6 +9,9 @@
 #   interrupt  SIGINT/SIGTERM to the ranks or to mpirun: a valid, resumable
 #              EXR with the samples done, bit-identical to a render of that spp
 #   compare    lensrt compare under MPI writes the EXRs of one process
+#   adaptive   adaptive sampling (--noise-threshold): 2 ranks render the bits
+#              of one process for every camera model, and a checkpoint
+#              written under MPI resumes to them
 # Usage: scaleout_mpi.sh MODE LENSRT SOURCE_DIR
 set -euo pipefail
 mode=$1 lensrt=$2 src=$3
@@ -60,6 +63,29 @@ models)
     [[ $(iinfo -v one.exr | grep -E "$counts") == "$(iinfo -v two.exr | grep -E "$counts")" ]] ||
       fail "$cam: the sample counts differ"
   done
+  ;;
+
+adaptive)
+  # shellcheck disable=SC2054
+  base=(render "$src/scenes/cornell.gltf" --res 24x17 --spp 48 --min-spp 4 --noise-threshold 0.05 --seed 11 -q
+    --aov variance)
+  for cam in "--camera pinhole" "--camera thin --fstop 2" "--camera thick --lens dgauss-50mm" \
+    "--camera lens --lens dgauss-50mm"; do
+    # shellcheck disable=SC2086
+    "$lensrt" "${base[@]}" $cam -o one.exr
+    # shellcheck disable=SC2086
+    "${mpi[@]}" "$lensrt" "${base[@]}" $cam --tile-size 4 -o two.exr
+    same one.exr two.exr "$cam: adaptive, 2 ranks against 1 process"
+    counts='lensrt:(spp|camera_samples|samples_done):'
+    [[ $(iinfo -v one.exr | grep -E "$counts") == "$(iinfo -v two.exr | grep -E "$counts")" ]] ||
+      fail "$cam: the adaptive sample counts differ"
+    [[ $(meta one.exr lensrt:spp) == "adaptive min=4 "* ]] || fail "$cam: lensrt:spp is $(meta one.exr lensrt:spp)"
+  done
+  # A checkpoint to 12 spp under MPI, resumed to 48 in one process.
+  # shellcheck disable=SC2086
+  "${mpi[@]}" "$lensrt" "${base[@]/48/12}" --camera lens --lens dgauss-50mm --checkpoint 0.001 -o ck.exr
+  "$lensrt" "${base[@]}" --camera lens --lens dgauss-50mm --resume ck.exr -o ck.exr
+  same one.exr ck.exr "adaptive: an MPI checkpoint resumed"
   ;;
 
 failures)

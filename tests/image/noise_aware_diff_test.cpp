@@ -117,6 +117,38 @@ TEST(NoiseAwareDiff, TheGainTestDecidesOnlyForEqualSpp) {
   EXPECT_FALSE(noiseAwareDiff(a, b, o).gainDecides);
 }
 
+// Adaptive renders: an "spp" channel gives each pixel its own degrees of
+// freedom. A pixel 10 standard errors off fails at 64 samples (critical |t|
+// about 4.6) and passes at 3 (over 100 with 2 degrees of freedom).
+Image withSppChannel(const Image& image, float spp) {
+  Image out(image.width, image.height, image.channels);
+  out.channels.push_back("spp");
+  out.pixels.clear();
+  for (std::size_t i = 0; i < image.pixels.size(); i += image.channelCount()) {
+    out.pixels.insert(out.pixels.end(), image.pixels.begin() + std::ptrdiff_t(i),
+                      image.pixels.begin() + std::ptrdiff_t(i + image.channelCount()));
+    out.pixels.push_back(spp);
+  }
+  return out;
+}
+
+TEST(NoiseAwareDiff, AnSppChannelGivesEachPixelItsOwnDegreesOfFreedom) {
+  const Image a = noisyRender(16, 16, 7, kSpp, kSampleNoise);
+  Image b = a;
+  const int r = b.channelIndex("R"), v = b.channelIndex("variance.R");
+  b.at(3, 4, r) += 10.0f * std::sqrt(2.0f * a.at(3, 4, v));
+  Image sparse = withSppChannel(a, 64.0f), sparseB = withSppChannel(b, 64.0f);
+  EXPECT_EQ(noiseAwareDiff(sparse, sparseB, {}).statisticalFailures, 1);
+  sparse.at(3, 4, sparse.channelIndex("spp")) = 3.0f;  // fewest samples of the two images count
+  const NoiseAwareReport few = noiseAwareDiff(sparse, sparseB, {});
+  EXPECT_EQ(few.statisticalFailures, 0);
+  EXPECT_EQ(few.degreesOfFreedom, 2.0);  // the fewest anywhere
+  EXPECT_FALSE(few.gainDecides);         // the images' samples differ in a pixel
+  EXPECT_TRUE(noiseAwareDiff(withSppChannel(a, 64.0f), sparseB, {}).gainDecides);
+  // Without the channel and with spp unknown, the normal quantile fails it.
+  EXPECT_EQ(noiseAwareDiff(a, b, {}).statisticalFailures, 1);
+}
+
 TEST(NoiseAwareDiff, OnePixelShiftFails) {
   const NoiseAwareReport r =
       noiseAwareDiff(noisyRender(kSize, kSize, 1, kSpp, kSampleNoise),

@@ -44,6 +44,19 @@ def test_same_bits_as_the_command_line(dof, cli, tmp_path, flags, kwargs):
     assert lensrt.diff(out, tmp_path / "py.exr", fail=0)["overall"]["maxError"] == 0.0
 
 
+@pytest.mark.parametrize("camera", [dict(camera="pinhole"), dict(camera="lens", lens="dgauss-50mm", fstop=2)])
+def test_adaptive_sampling_has_the_bits_of_the_command_line(dof, cli, tmp_path, camera):
+    out = tmp_path / "cli.exr"
+    flags = ["--camera", camera["camera"]] + (["--lens", "dgauss-50mm", "--fstop", "2"] if "lens" in camera else [])
+    cli("render", DOF, "--res", "48x27", "--spp", "32", "--min-spp", "4", "--noise-threshold", "0.1", "--seed", "11",
+        "-q", "-o", out, *flags)
+    result = dof.render(res=(48, 27), spp=32, min_spp=4, noise_threshold=0.1, seed=11, **camera)
+    assert lensrt.diff(out, result, fail=0, warn=0)["overall"]["maxError"] == 0.0
+    spp = result.channels["spp"]
+    assert spp.min() == 4 and 4 < spp.max() <= 32 and result.spp == 32
+    assert result.metadata["lensrt:spp"].startswith("adaptive min=4 mean=")
+
+
 def test_arrays_view_the_render_without_copies(dof):
     result = dof.render(res=(64, 36), spp=1, aov="depth")
     rgb, channels = result.rgb, result.channels
@@ -137,7 +150,8 @@ def test_every_keyword_is_read(dof, tmp_path):
     pose = np.eye(4)
     pose[1, 3] = 1.2
     result = dof.render(camera="lens", lens="dgauss-50mm", fstop=4, focus="auto", focus_pixel=(4, 4),
-                        sensor="aps-c", res=(24, 16), spp=2, seed=3, aov=("depth",), env="constant:0.5",
+                        sensor="aps-c", res=(24, 16), spp=2, noise_threshold=0.5, min_spp=1, seed=3, aov=("depth",),
+                        env="constant:0.5",
                         env_rotate=10, env_intensity=0.5, max_depth=3, camera_node=0, camera_to_world=pose,
                         threads=1, crop=(0, 24, 0, 16), blades=6, blade_rotation=15, aperture_mask=None,
                         focal_length=None, exposure="physical", shutter=1 / 250, iso=400, dispersion=False,
@@ -149,6 +163,7 @@ def test_every_keyword_is_read(dof, tmp_path):
     assert m["lensrt:coatings"] == "multi" and m["lensrt:dispersion"] == "off"
     assert "smartphone" in m["lensrt:sensor_noise"] and (tmp_path / "a.dng").exists()
     assert "max_depth=3" in m["lensrt:settings"] and m["lensrt:seed"] == "3"
+    assert "noise_threshold=0.5 min_spp=1" in m["lensrt:settings"]
     assert "transport=spectral:cie1931,wb=5000K,output=acescg" in m["lensrt:settings"]
 
 
@@ -157,7 +172,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
     render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
     keywords = [a.arg for a in render.args.kwonlyargs]
-    assert len(keywords) == 37
+    assert len(keywords) == 39
     doc = lensrt.Scene.render.__doc__
     for k in keywords:
         assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line
@@ -182,6 +197,10 @@ def test_render_help_lists_every_keyword_of_the_stub():
         (dict(camera="lens"), "--lens"),
         (dict(progress=3), "progress: expected a callable"),
         (dict(crop=(10, 5, 0, 4)), "crop: expected x0 < x1"),
+        (dict(noise_threshold=0), "--noise-threshold: expected a number > 0"),
+        (dict(noise_threshold="low"), "noise_threshold: expected a"),
+        (dict(noise_threshold=0.01, min_spp=4), "--min-spp: 4 is above --spp 1"),
+        (dict(min_spp=1), "--min-spp: needs --noise-threshold"),
     ],
 )
 def test_bad_options_raise_value_error(dof, kwargs, error):
