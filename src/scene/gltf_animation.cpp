@@ -79,8 +79,10 @@ struct ChannelValue {
   std::string problem;
 };
 
+// `components` values per keyframe; a SCALAR output holds them one after
+// another (morph weights: one per target).
 ChannelValue evaluate(const Context& ctx, const tinygltf::AnimationSampler& sampler, int components, double t,
-                      bool rotation, const std::string& label) {
+                      bool rotation, bool scalarOutput, const std::string& label) {
   Interpolation mode = Interpolation::Linear;
   if (sampler.interpolation == "STEP")
     mode = Interpolation::Step;
@@ -90,7 +92,7 @@ ChannelValue evaluate(const Context& ctx, const tinygltf::AnimationSampler& samp
     return {{}, fmt::format("interpolation '{}' is not LINEAR, STEP or CUBICSPLINE", sampler.interpolation)};
   const std::vector<float> times = readFloats(ctx, sampler.input, 1, fmt::format("{} input", label).c_str());
   const std::vector<float> values =
-      readFloats(ctx, sampler.output, components, fmt::format("{} output", label).c_str());
+      readFloats(ctx, sampler.output, scalarOutput ? 1 : components, fmt::format("{} output", label).c_str());
   if (times.empty()) return {{}, "its sampler has no keyframes"};
   for (std::size_t k = 0; k < times.size(); ++k) {
     if (!std::isfinite(times[k])) return {{}, fmt::format("its keyframe time {} is not finite", k)};
@@ -167,21 +169,29 @@ std::map<int, AnimatedTrs> animatedNodes(const Context& ctx, const AnimationTime
       const auto skip = [&](const std::string& why) {
         ctx.warnings.warn(fmt::format("{} is skipped: {}", label, why));
       };
-      if (channel.target_path == "weights") {
-        skip("morph target weights are not animated yet");
-        continue;
-      }
-      const bool rotation = channel.target_path == "rotation";
-      const int components = rotation ? 4 : 3;
-      if (!rotation && channel.target_path != "translation" && channel.target_path != "scale") {
-        skip("the path is not translation, rotation or scale");
+      const bool rotation = channel.target_path == "rotation", weights = channel.target_path == "weights";
+      int components = rotation ? 4 : 3;
+      if (!rotation && !weights && channel.target_path != "translation" && channel.target_path != "scale") {
+        skip("the path is not translation, rotation, scale or weights");
         continue;
       }
       if (channel.target_node < 0 || std::size_t(channel.target_node) >= ctx.model.nodes.size()) {
         skip("its target node does not exist");
         continue;
       }
-      if (!ctx.model.nodes[std::size_t(channel.target_node)].matrix.empty()) {
+      if (weights) {
+        // One weight per morph target of the node's mesh.
+        const int mesh = ctx.model.nodes[std::size_t(channel.target_node)].mesh;
+        std::size_t targets = 0;
+        if (mesh >= 0 && std::size_t(mesh) < ctx.model.meshes.size())
+          for (const tinygltf::Primitive& prim : ctx.model.meshes[std::size_t(mesh)].primitives)
+            targets = std::max(targets, prim.targets.size());
+        if (targets == 0) {
+          skip("its node has no mesh with morph targets");
+          continue;
+        }
+        components = int(targets);
+      } else if (!ctx.model.nodes[std::size_t(channel.target_node)].matrix.empty()) {
         skip("its node has a matrix (glTF animates only translation, rotation and scale)");
         continue;
       }
@@ -190,13 +200,15 @@ std::map<int, AnimatedTrs> animatedNodes(const Context& ctx, const AnimationTime
         continue;
       }
       const ChannelValue v = evaluate(ctx, animation.samplers[std::size_t(channel.sampler)], components,
-                                      time.seconds, rotation, label);
+                                      time.seconds, rotation, weights, label);
       if (!v.problem.empty()) {
         skip(v.problem);
         continue;
       }
       AnimatedTrs& trs = nodes[channel.target_node];
-      if (rotation)
+      if (weights)
+        trs.weights = v.value;
+      else if (rotation)
         trs.rotation = std::array<double, 4>{v.value[0], v.value[1], v.value[2], v.value[3]};
       else if (channel.target_path == "translation")
         trs.translation = std::array<double, 3>{v.value[0], v.value[1], v.value[2]};

@@ -2,14 +2,15 @@
 // channels of the animations that play, each sampler evaluated at the time
 // (LINEAR, with spherical interpolation for rotations; STEP; CUBICSPLINE with
 // the specification's Hermite tangents), clamped to its first and last
-// keyframes. Morph-target weights and skins are not animated yet: their
-// channels are skipped with a warning naming them.
+// keyframes. Channels animate translation, rotation, scale and morph-target
+// weights; skins are not posed yet.
 #pragma once
 
 #include <array>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/animation_time.h"
 #include "scene/gltf_context.h"
@@ -20,6 +21,7 @@ namespace lensrt::gltf {
 struct AnimatedTrs {
   std::optional<std::array<double, 3>> translation, scale;
   std::optional<std::array<double, 4>> rotation;  // x, y, z, w (unit)
+  std::optional<std::vector<double>> weights;     // morph target weights of its mesh
 };
 
 // Node index -> its animated values. Throws UsageError("--animation") for an

@@ -364,7 +364,7 @@ Transform localTransform(const Context& ctx, int index, const tinygltf::Node& no
                          const gltf::AnimatedTrs* animated) {
   const std::string label = "node " + std::to_string(index);
   Transform local;
-  if (animated) {
+  if (animated && (animated->translation || animated->rotation || animated->scale)) {
     std::vector<double> t = node.translation, r = node.rotation, sc = node.scale;
     if (animated->translation) t.assign(animated->translation->begin(), animated->translation->end());
     if (animated->rotation) r.assign(animated->rotation->begin(), animated->rotation->end());
@@ -449,8 +449,17 @@ class Traversal {
   }
 
   void placeMesh(int index, const tinygltf::Node& node, const Transform& world) {
-    auto [it, inserted] = meshes_.try_emplace(node.mesh);
-    if (inserted) it->second = gltf::convertMesh(ctx_, node.mesh, desc_.meshes, stats_);
+    if (static_cast<std::size_t>(node.mesh) >= ctx_.model.meshes.size())
+      ctx_.fail("mesh " + std::to_string(node.mesh) + " does not exist");
+    // A mesh is converted once per set of morph weights its nodes give it
+    // (the animation's at this time, the node's, or the mesh's own).
+    const auto pose = animated_.find(index);
+    std::vector<double> weights = pose != animated_.end() && pose->second.weights
+                                      ? *pose->second.weights
+                                      : gltf::morphWeights(ctx_, node, node.mesh);
+    if (std::all_of(weights.begin(), weights.end(), [](double w) { return w == 0.0; })) weights.clear();
+    auto [it, inserted] = meshes_.try_emplace(std::pair{node.mesh, weights});
+    if (inserted) it->second = gltf::convertMesh(ctx_, node.mesh, desc_.meshes, stats_, weights);
     std::vector<Transform> placements;
     if (const tinygltf::Value* ext = gltf::extension(node.extensions, "EXT_mesh_gpu_instancing"))
       placements = gpuInstances(index, *ext, world);
@@ -546,7 +555,8 @@ class Traversal {
   const Context& ctx_;
   SceneDesc& desc_;
   const std::map<int, gltf::AnimatedTrs>& animated_;
-  std::map<int, std::vector<int>> meshes_;  // glTF mesh -> desc meshes (one per primitive)
+  std::map<std::pair<int, std::vector<double>>, std::vector<int>>
+      meshes_;  // glTF mesh -> desc meshes (one per primitive)
   gltf::MeshStats stats_;
 };
 

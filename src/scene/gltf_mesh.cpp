@@ -1,5 +1,7 @@
 #include "scene/gltf_mesh.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -48,7 +50,6 @@ void warnIgnoredAttributes(const Context& ctx, const tinygltf::Primitive& prim) 
     else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
       ctx.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
   }
-  if (!prim.targets.empty()) ctx.warnings.warn("morph targets are not supported: meshes render without them");
   for (const auto& [name, value] : prim.extensions)
     if (!isSupportedExtension(name)) ctx.warnUnsupportedExtension(name);
 }
@@ -106,13 +107,44 @@ bool degenerate(const std::vector<Vec3f>& p, const std::array<std::uint32_t, 3>&
 
 }  // namespace
 
-std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats) {
+// Adds the morph targets' deltas, in proportion to their weights, to the
+// positions, normals and tangents just read (glTF 2.0 3.7.2.2).
+void applyMorphTargets(const Context& ctx, const tinygltf::Primitive& prim,
+                       const std::vector<double>& weights, const std::string& label, Mesh& mesh) {
+  const std::size_t n = mesh.positions.size();
+  for (std::size_t t = 0; t < prim.targets.size() && t < weights.size(); ++t) {
+    const float w = float(weights[t]);
+    if (w == 0.0f) continue;
+    const auto delta = [&](const char* attribute) -> std::vector<Vec3f> {
+      const auto it = prim.targets[t].find(attribute);
+      if (it == prim.targets[t].end()) return {};
+      const std::string what = label + " morph target " + std::to_string(t) + " " + attribute;
+      std::vector<Vec3f> d = group<Vec3f, 3>(readFloats(ctx, it->second, 3, what.c_str()));
+      if (d.size() != n)
+        ctx.fail(what + " has " + std::to_string(d.size()) + " elements, POSITION has " + std::to_string(n));
+      return d;
+    };
+    const std::vector<Vec3f> dp = delta("POSITION"), dn = delta("NORMAL"), dt = delta("TANGENT");
+    for (std::size_t i = 0; i < dp.size(); ++i) mesh.positions[i] += dp[i] * w;
+    for (std::size_t i = 0; i < dn.size() && i < mesh.normals.size(); ++i) mesh.normals[i] += dn[i] * w;
+    for (std::size_t i = 0; i < dt.size() && i < mesh.tangents.size(); ++i) {
+      mesh.tangents[i].x += dt[i].x * w;
+      mesh.tangents[i].y += dt[i].y * w;
+      mesh.tangents[i].z += dt[i].z * w;
+    }
+  }
+  // Blended normals are no longer unit (the specification leaves that to us).
+  for (Vec3f& normal : mesh.normals)
+    if (const float l = length(normal); l > 0) normal = normal * (1.0f / l);
+}
+
+std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats,
+                             const std::vector<double>& morphWeights) {
   if (index < 0 || static_cast<std::size_t>(index) >= ctx.model.meshes.size())
     ctx.fail("mesh " + std::to_string(index) + " does not exist");
   const tinygltf::Mesh& gm = ctx.model.meshes[static_cast<std::size_t>(index)];
   // (Not "#" + std::to_string: GCC 12 warns falsely about it, bug 105329.)
   const std::string baseName = gm.name.empty() ? std::string("#").append(std::to_string(index)) : gm.name;
-  if (!gm.weights.empty()) ctx.warnings.warn("morph targets are not supported: meshes render without them");
   std::vector<int> result;
   for (std::size_t p = 0; p < gm.primitives.size(); ++p) {
     const tinygltf::Primitive& prim = gm.primitives[p];
@@ -157,6 +189,13 @@ std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& m
     };
     mesh.normals = group<Vec3f, 3>(optional("NORMAL", 3));
     mesh.tangents = group<Vec4f, 4>(optional("TANGENT", 4));
+    if (!morphWeights.empty() && !prim.targets.empty()) {
+      applyMorphTargets(ctx, prim, morphWeights, label, mesh);
+      for (const Vec3f& v : mesh.positions)
+        if (!isFinite(v) || std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate ||
+            std::abs(v.z) > kMaxCoordinate)
+          ctx.fail(label + ": a morphed vertex position is not finite or beyond 1e15");
+    }
     mesh.uvs = group<Vec2f, 2>(optional("TEXCOORD_0", 2));
     mesh.uvs1 = group<Vec2f, 2>(optional("TEXCOORD_1", 2));
     if (const auto colour = prim.attributes.find("COLOR_0"); colour != prim.attributes.end()) {
@@ -210,6 +249,19 @@ std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& m
     meshes.push_back(std::move(mesh));
   }
   return result;
+}
+
+std::vector<double> morphWeights(const Context& ctx, const tinygltf::Node& node, int mesh) {
+  const tinygltf::Mesh& gm = ctx.model.meshes[static_cast<std::size_t>(mesh)];
+  std::size_t targets = 0;
+  for (const tinygltf::Primitive& prim : gm.primitives) targets = std::max(targets, prim.targets.size());
+  const std::vector<double>& weights = !node.weights.empty() ? node.weights : gm.weights;
+  if (targets == 0) return {};
+  if (!weights.empty() && weights.size() != targets)
+    ctx.fail(fmt::format("mesh {} has {} morph targets but {} weights", mesh, targets, weights.size()));
+  for (const double w : weights)
+    if (!std::isfinite(w)) ctx.fail(fmt::format("mesh {}: a morph target weight is not finite", mesh));
+  return weights;
 }
 
 }  // namespace lensrt::gltf

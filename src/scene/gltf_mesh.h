@@ -21,7 +21,15 @@ struct MeshStats {
 // Converts every primitive of glTF mesh `index` (TRIANGLES, TRIANGLE_STRIP,
 // TRIANGLE_FAN; indexed or not) to a Mesh appended to `meshes`; returns their
 // indices. Zero-area triangles are dropped and counted; other modes are
-// skipped with a warning. Throws InputError for broken data.
-std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats);
+// skipped with a warning. Throws InputError for broken data. `morphWeights`:
+// the weights of the primitives' morph targets (POSITION, NORMAL and TANGENT
+// deltas added in proportion), empty or all 0 for the base mesh.
+std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats,
+                             const std::vector<double>& morphWeights = {});
+
+// The morph target weights of a node showing mesh `mesh`: its own, else the
+// mesh's default ones, else none; a count that does not match the targets
+// is an InputError.
+std::vector<double> morphWeights(const Context& ctx, const tinygltf::Node& node, int mesh);
 
 }  // namespace lensrt::gltf
