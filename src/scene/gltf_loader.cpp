@@ -336,8 +336,6 @@ void checkExtensions(const Context& ctx) {
     if (!gltf::isSupportedExtension(ext)) ctx.fail("required extension " + ext + " is not supported");
   for (const std::string& ext : ctx.model.extensionsUsed)
     if (!gltf::isSupportedExtension(ext)) ctx.warnUnsupportedExtension(ext);
-  if (!ctx.model.skins.empty())
-    ctx.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
 }
 
 Transform trs(const Context& ctx, const std::string& label, const std::vector<double>& t,
@@ -409,6 +407,7 @@ class Traversal {
     // Reverse so that the depth-first order (and the camera order) follows the file.
     for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, Transform()});
     std::vector<bool> visited(ctx_.model.nodes.size(), false);
+    std::vector<int> order;
     while (!stack.empty()) {
       const Item item = std::move(stack.back());
       stack.pop_back();
@@ -423,17 +422,20 @@ class Traversal {
       const Transform world = item.parent * localTransform(ctx_, item.node, node,
                                                            pose == animated_.end() ? nullptr : &pose->second);
       if (!finite(world)) ctx_.fail("node " + std::to_string(item.node) + ": world transform is not finite");
-      visit(item.node, node, world);
+      order.push_back(item.node);
+      worlds_.emplace(item.node, world);
       for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
     }
+    // Every node's world transform first: a skin needs its joints' wherever
+    // they sit in the tree.
+    for (const int index : order)
+      visit(index, ctx_.model.nodes[static_cast<std::size_t>(index)], worlds_.at(index));
   }
 
   const gltf::MeshStats& stats() const { return stats_; }
 
  private:
   void visit(int index, const tinygltf::Node& node, const Transform& world) {
-    if (node.skin >= 0)
-      ctx_.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
     for (const auto& [name, value] : node.extensions)
       if (!gltf::isSupportedExtension(name)) ctx_.warnUnsupportedExtension(name);
     if (node.mesh >= 0) placeMesh(index, node, world);
@@ -458,6 +460,14 @@ class Traversal {
                                       ? *pose->second.weights
                                       : gltf::morphWeights(ctx_, node, node.mesh);
     if (std::all_of(weights.begin(), weights.end(), [](double w) { return w == 0.0; })) weights.clear();
+    if (node.skin >= 0) {
+      // Skinned vertices are blended into world space by the joints; the
+      // node's own transform does not apply (glTF 2.0 3.7.3).
+      const std::vector<Transform::Matrix> joints = jointMatrices(index, node.skin);
+      for (const int mesh : gltf::convertMesh(ctx_, node.mesh, desc_.meshes, stats_, weights, &joints))
+        desc_.instances.push_back({mesh, Transform()});
+      return;
+    }
     auto [it, inserted] = meshes_.try_emplace(std::pair{node.mesh, weights});
     if (inserted) it->second = gltf::convertMesh(ctx_, node.mesh, desc_.meshes, stats_, weights);
     std::vector<Transform> placements;
@@ -467,6 +477,37 @@ class Traversal {
       placements.push_back(world);
     for (const Transform& xf : placements)
       for (const int mesh : it->second) desc_.instances.push_back({mesh, xf});
+  }
+
+  // Each joint's world transform times its inverse bind matrix.
+  std::vector<Transform::Matrix> jointMatrices(int index, int skinIndex) {
+    const std::string label = "node " + std::to_string(index) + " skin " + std::to_string(skinIndex);
+    if (static_cast<std::size_t>(skinIndex) >= ctx_.model.skins.size()) ctx_.fail(label + " does not exist");
+    const tinygltf::Skin& skin = ctx_.model.skins[static_cast<std::size_t>(skinIndex)];
+    std::vector<float> inverseBind;
+    if (skin.inverseBindMatrices >= 0) {
+      inverseBind =
+          gltf::readFloats(ctx_, skin.inverseBindMatrices, 16, (label + " inverseBindMatrices").c_str());
+      if (inverseBind.size() != 16 * skin.joints.size())
+        ctx_.fail(label + ": inverseBindMatrices has " + std::to_string(inverseBind.size() / 16) +
+                  " matrices for " + std::to_string(skin.joints.size()) + " joints");
+    }
+    std::vector<Transform::Matrix> joints;
+    for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+      const auto world = worlds_.find(skin.joints[j]);
+      if (world == worlds_.end())
+        ctx_.fail(label + ": joint " + std::to_string(skin.joints[j]) + " is not a node of the scene");
+      Transform bind;
+      if (!inverseBind.empty()) {
+        std::array<double, 16> m{};
+        for (std::size_t k = 0; k < 16; ++k) m[k] = inverseBind[16 * j + k];
+        bind = Transform::fromColumnMajor(m.data());
+      }
+      const Transform joint = world->second * bind;
+      if (!finite(joint)) ctx_.fail(label + ": joint " + std::to_string(j) + "'s matrix is not finite");
+      joints.push_back(joint.matrix());
+    }
+    return joints;
   }
 
   // EXT_mesh_gpu_instancing: each instance is world * T * R * S from its attributes.
@@ -555,6 +596,7 @@ class Traversal {
   const Context& ctx_;
   SceneDesc& desc_;
   const std::map<int, gltf::AnimatedTrs>& animated_;
+  std::map<int, Transform> worlds_;  // every node of the scene, posed
   std::map<std::pair<int, std::vector<double>>, std::vector<int>>
       meshes_;  // glTF mesh -> desc meshes (one per primitive)
   gltf::MeshStats stats_;

@@ -7,7 +7,8 @@
 // (orthographic ones are kept, marked and warned about), metallic-roughness
 // materials with baseColor / metallicRoughness / normal / emissive textures,
 // KHR_materials_emissive_strength, KHR_lights_punctual (units: see
-// gltf_lights.cpp), node animations at a moment (gltf_animation.h). Everything else the file uses is named in
+// gltf_lights.cpp), node animations, morph targets and skins at a moment
+// (gltf_animation.h, gltf_mesh.h). Everything else the file uses is named in
 // one warning each; a required extension we do not implement is an error.
 #pragma once
 

@@ -47,8 +47,6 @@ void warnIgnoredAttributes(const Context& ctx, const tinygltf::Primitive& prim) 
       ctx.warnings.warn("extra UV sets (TEXCOORD_2 and up) are ignored");
     else if (name.rfind("COLOR_", 0) == 0 && name != "COLOR_0")
       ctx.warnings.warn("vertex colours beyond COLOR_0 are ignored");
-    else if (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0)
-      ctx.warnings.warn("skins are not supported: skinned meshes render in their bind pose");
   }
   for (const auto& [name, value] : prim.extensions)
     if (!isSupportedExtension(name)) ctx.warnUnsupportedExtension(name);
@@ -138,8 +136,64 @@ void applyMorphTargets(const Context& ctx, const tinygltf::Primitive& prim,
     if (const float l = length(normal); l > 0) normal = normal * (1.0f / l);
 }
 
+// Blends each vertex by its joints' matrices (JOINTS_n, WEIGHTS_n for every
+// set n the primitive has) into world space; normals and tangents by the
+// blended matrix's linear part, renormalised.
+void applySkin(const Context& ctx, const tinygltf::Primitive& prim,
+               const std::vector<Transform::Matrix>& joints, const std::string& label, Mesh& mesh) {
+  const std::size_t n = mesh.positions.size();
+  std::vector<Transform::Matrix> blend(n, Transform::Matrix{});
+  std::vector<double> total(n, 0.0);
+  for (int set = 0;; ++set) {
+    const auto j = prim.attributes.find("JOINTS_" + std::to_string(set));
+    const auto w = prim.attributes.find("WEIGHTS_" + std::to_string(set));
+    if (j == prim.attributes.end() || w == prim.attributes.end()) break;
+    const std::string what = label + " JOINTS_" + std::to_string(set);
+    const std::vector<float> index = readFloats(ctx, j->second, 4, what.c_str());
+    const std::vector<float> weight =
+        readFloats(ctx, w->second, 4, (label + " WEIGHTS_" + std::to_string(set)).c_str());
+    if (index.size() != 4 * n || weight.size() != 4 * n) ctx.fail(what + ": not one set of 4 per vertex");
+    for (std::size_t v = 0; v < n; ++v)
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double wk = weight[4 * v + k];
+        if (wk == 0.0) continue;
+        const float joint = index[4 * v + k];
+        if (!(joint >= 0 && std::size_t(joint) < joints.size()))
+          ctx.fail(fmt::format("{}: joint {} of vertex {} is not one of the skin's {} joints", what, joint, v,
+                               joints.size()));
+        const Transform::Matrix& m = joints[std::size_t(joint)];
+        for (std::size_t r = 0; r < 4; ++r)
+          for (std::size_t c = 0; c < 4; ++c) blend[v][r][c] += wk * m[r][c];
+        total[v] += wk;
+      }
+  }
+  const auto apply = [](const Transform::Matrix& m, const Vec3f& p, double w) {
+    return Vec3f(Vec3d{m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3] * w,
+                       m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3] * w,
+                       m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3] * w});
+  };
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!(total[v] > 0)) continue;  // no weight: the vertex keeps its bind pose
+    Transform::Matrix& m = blend[v];
+    // Weights meant to sum to 1 often miss by rounding: normalise them.
+    for (auto& row : m)
+      for (double& x : row) x /= total[v];
+    mesh.positions[v] = apply(m, mesh.positions[v], 1.0);
+    if (v < mesh.normals.size()) {
+      const Vec3f d = apply(m, mesh.normals[v], 0.0);
+      if (const float l = length(d); l > 0) mesh.normals[v] = d * (1.0f / l);
+    }
+    if (v < mesh.tangents.size()) {
+      const Vec4f t = mesh.tangents[v];
+      const Vec3f d = apply(m, Vec3f{t.x, t.y, t.z}, 0.0);
+      if (const float l = length(d); l > 0) mesh.tangents[v] = {d.x / l, d.y / l, d.z / l, t.w};
+    }
+  }
+}
+
 std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats,
-                             const std::vector<double>& morphWeights) {
+                             const std::vector<double>& morphWeights,
+                             const std::vector<Transform::Matrix>* joints) {
   if (index < 0 || static_cast<std::size_t>(index) >= ctx.model.meshes.size())
     ctx.fail("mesh " + std::to_string(index) + " does not exist");
   const tinygltf::Mesh& gm = ctx.model.meshes[static_cast<std::size_t>(index)];
@@ -189,12 +243,13 @@ std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& m
     };
     mesh.normals = group<Vec3f, 3>(optional("NORMAL", 3));
     mesh.tangents = group<Vec4f, 4>(optional("TANGENT", 4));
-    if (!morphWeights.empty() && !prim.targets.empty()) {
-      applyMorphTargets(ctx, prim, morphWeights, label, mesh);
+    if ((!morphWeights.empty() && !prim.targets.empty()) || joints) {
+      if (!morphWeights.empty()) applyMorphTargets(ctx, prim, morphWeights, label, mesh);
+      if (joints) applySkin(ctx, prim, *joints, label, mesh);
       for (const Vec3f& v : mesh.positions)
         if (!isFinite(v) || std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate ||
             std::abs(v.z) > kMaxCoordinate)
-          ctx.fail(label + ": a morphed vertex position is not finite or beyond 1e15");
+          ctx.fail(label + ": a morphed or skinned vertex position is not finite or beyond 1e15");
     }
     mesh.uvs = group<Vec2f, 2>(optional("TEXCOORD_0", 2));
     mesh.uvs1 = group<Vec2f, 2>(optional("TEXCOORD_1", 2));

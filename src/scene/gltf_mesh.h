@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/transform.h"
 #include "scene/gltf_context.h"
 #include "scene/scene_desc.h"
 
@@ -24,8 +25,12 @@ struct MeshStats {
 // skipped with a warning. Throws InputError for broken data. `morphWeights`:
 // the weights of the primitives' morph targets (POSITION, NORMAL and TANGENT
 // deltas added in proportion), empty or all 0 for the base mesh.
+// `joints`: for a skinned mesh, each joint's matrix (its world transform times
+// its inverse bind matrix): vertices are blended by JOINTS_n / WEIGHTS_n into
+// world space (glTF 2.0 3.7.3); null for a mesh placed by its node.
 std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats,
-                             const std::vector<double>& morphWeights = {});
+                             const std::vector<double>& morphWeights = {},
+                             const std::vector<Transform::Matrix>* joints = nullptr);
 
 // The morph target weights of a node showing mesh `mesh`: its own, else the
 // mesh's default ones, else none; a count that does not match the targets

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <tuple>
 
 #include "core/error.h"
 #include "gltf_test_builder.h"
@@ -158,6 +159,41 @@ TEST(GltfAnimation, MorphTargetsBlendByTheirWeights) {
   // A count of weights that does not match the targets is an error naming the mesh.
   Warnings w2;
   EXPECT_THROW(build(json{0.5}, nullptr).load(0, w2), InputError);
+}
+
+// A skin: vertex 0 follows joint 0 (at the origin), vertex 1 joint 1 (bound
+// at (0, 3, 0), then animated to (0, 3, 4) over 2 s), vertex 2 both by half.
+// Joint matrices are world x inverse bind: at t = 1 joint 1 has moved by
+// (0, 0, 2), so vertex 1 (1, 0, 0) is at (1, 0, 2) and vertex 2 (0, 1, 0) at
+// (0, 1, 1); the skinned node's own translation does not apply.
+TEST(GltfAnimation, ASkinBlendsVerticesByTheirJoints) {
+  GltfBuilder b;
+  const int pos = b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int joints = b.u8({0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0}, "VEC4");
+  const int weights = b.floats({1, 0, 0, 0, 1, 0, 0, 0, 0.5, 0.5, 0, 0}, "VEC4");
+  const int mesh =
+      b.mesh({{"attributes", {{"POSITION", pos}, {"JOINTS_0", joints}, {"WEIGHTS_0", weights}}}});
+  b.node({{"mesh", mesh}, {"skin", 0}, {"translation", {100, 0, 0}}});
+  const int j0 = b.node(json::object());
+  const int j1 = b.node({{"translation", {0, 3, 0}}});
+  const int bind = b.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  0, 1,   // identity
+                             1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -3, 0, 1},  // translate (0, -3, 0)
+                            "MAT4");
+  b.doc["skins"] = json::array({{{"joints", {j0, j1}}, {"inverseBindMatrices", bind}}});
+  b.doc["animations"] = json::array(
+      {{{"samplers",
+         {{{"input", b.floats({0, 2}, "SCALAR")}, {"output", b.floats({0, 3, 0, 0, 3, 4}, "VEC3")}}}},
+        {"channels", {{{"sampler", 0}, {"target", {{"node", j1}, {"path", "translation"}}}}}}}});
+  const auto file = test::writeFile(test::testDir() / "skin.gltf", b.json());
+  Warnings w;
+  for (const auto& [t, v1, v2] :
+       {std::tuple{0.0, Vec3d{1, 0, 0}, Vec3d{0, 1, 0}}, std::tuple{1.0, Vec3d{1, 0, 2}, Vec3d{0, 1, 1}}}) {
+    const SceneDesc d = loadGltf(file, -1, w, {}, AnimationTime{t, ""});
+    expectNear(worldVertex(d, 0), {0, 0, 0});
+    expectNear(worldVertex(d, 1), v1);
+    expectNear(worldVertex(d, 2), v2);
+  }
+  EXPECT_TRUE(w.all().empty()) << *w.all().begin();
 }
 
 // The Khronos AnimatedTriangle (a LINEAR rotation about z through 0, 90, 180,
