@@ -9,6 +9,7 @@
 
 #include "api/aperture_mask_file.h"
 #include "api/film_colour.h"
+#include "api/keyframes.h"
 #include "api/lens_loading.h"
 #include "camera/lens_camera.h"
 #include "camera/orthographic_camera.h"
@@ -44,13 +45,20 @@ std::string metresText(double m) {
 
 }  // namespace
 
-// "auto" -> nullopt; "inf"/"infinity" -> infinity; else positive metres.
-std::optional<double> parseFocus(const std::string& text) {
+// "auto" -> nullopt; "inf"/"infinity" -> infinity; keyframes at the time;
+// else positive metres.
+std::optional<double> parseFocus(const std::string& text, double seconds) {
+  if (isKeyframes(text))
+    return valueAt(parseKeyframes(
+                       "--focus", text, [](double m) { return m > 0.0; }, "METRES"),
+                   seconds);
   if (text == "auto") return std::nullopt;
   if (text == "inf" || text == "infinity") return kInfinity;
   const auto v = parseDouble(text);
   if (!v || !(*v > 0.0))
-    throw UsageError("--focus", "expected a distance in metres > 0, auto or inf, got '" + text + "'");
+    throw UsageError(
+        "--focus",
+        "expected a distance in metres > 0, auto, inf or keyframes SECONDS:METRES,..., got '" + text + "'");
   return *v;
 }
 
@@ -239,7 +247,7 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
                                               : "the lens";
 
   // Focus: what the chosen pixel sees, measured along the axis.
-  std::optional<double> focus = parseFocus(o.focus);
+  std::optional<double> focus = parseFocus(o.focus, o.timeSeconds);
   if (!o.focusPixel.empty() && focus) throw UsageError("--focus-pixel", "only applies with --focus auto");
   const bool needsFocus = o.model != "pinhole" || lens.has_value();
   if (!focus && needsFocus) {

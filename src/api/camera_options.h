@@ -32,8 +32,8 @@ struct CameraOptions {
   std::string model = "pinhole";
   std::string lens;  // a path, or a name from the lens library; empty: none
   std::optional<double> fNumber;
-  std::string focus = "auto";
-  std::string focusPixel;  // "X,Y" raster pixel for --focus auto; empty: the centre
+  std::string focus = "auto";  // also keyframes SECONDS:METRES,... (api/keyframes.h)
+  std::string focusPixel;      // "X,Y" raster pixel for --focus auto; empty: the centre
   std::string sensor = "full-frame";
   int blades = 0;
   double bladeRotationDegrees = 0.0;
@@ -56,11 +56,15 @@ struct CameraOptions {
   std::string noise = "off";         // --noise on: the sensor's readout (api/sensor_readout.h)
   std::string sensorParams;          // --sensor-params NAME|FILE.json; empty: the default sensor
   std::filesystem::path lensDir;     // the library; addCameraOptions sets the installed one
+  // When the shutter opens (the scene's --time; RenderJob sets it): where
+  // keyframed settings are read.
+  double timeSeconds = 0.0;
 };
 
 // --focus: "auto" -> nullopt, "inf"/"infinity" -> infinity, else metres > 0.
 // Throws UsageError.
-std::optional<double> parseFocus(const std::string& text);
+// Keyframes (api/keyframes.h, "0:1.2,2:4") give their value at `seconds`.
+std::optional<double> parseFocus(const std::string& text, double seconds = 0.0);
 // --focus-pixel "X,Y" in pixels. Throws UsageError.
 Vec2d parseFocusPixel(const std::string& text);
 

@@ -167,7 +167,9 @@ std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warn
     FilmGeometry raster;
     raster.width = width_;
     raster.height = height_;
-    return lensrt::makeCamera(options, gltfCamera_, raster, hitDistance, warnings);
+    CameraOptions atTime = options;
+    atTime.timeSeconds = scene_->options().time.seconds;
+    return lensrt::makeCamera(atTime, gltfCamera_, raster, hitDistance, warnings);
   } catch (const std::invalid_argument& e) {
     throw InputError(scene_->options().file, "camera '" + gltfCamera_.name + "': " + e.what());
   }

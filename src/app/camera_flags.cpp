@@ -20,8 +20,9 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
       ->check(numberIn(0.5, 1024.0, "the f-number"));
   cmd.add_option("--focus", o.focus,
                  "focus distance in metres from the entrance pupil, 'auto' (what the centre pixel, or "
-                 "--focus-pixel, sees) or 'inf'; default auto")
-      ->check(checkWith(parseFocus, "METRES|auto|inf"));
+                 "--focus-pixel, sees), 'inf', or keyframes SECONDS:METRES,... read at --time (a rack focus, "
+                 "e.g. 0:1.2,2:4); default auto")
+      ->check(checkWith([](const std::string& s) { return parseFocus(s); }, "METRES|auto|inf|KEYFRAMES"));
   cmd.add_option("--focus-pixel", o.focusPixel, "pixel X,Y that --focus auto focuses on, e.g. 320,180")
       ->check(checkWith(parseFocusPixel, "X,Y"));
   cmd.add_option(
