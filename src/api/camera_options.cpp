@@ -62,6 +62,11 @@ std::optional<double> parseFocus(const std::string& text, double seconds) {
   return *v;
 }
 
+Keyframes fNumberKeyframes(const std::string& text) {
+  return parseKeyframes(
+      "--fstop", text, [](double n) { return n >= 0.5 && n <= 1024.0; }, "an f-number from 0.5 to 1024");
+}
+
 Vec2d parseFocusPixel(const std::string& text) {
   const std::size_t comma = text.find(',');
   const auto x = comma == std::string::npos ? std::nullopt : parseDouble(text.substr(0, comma));
@@ -137,6 +142,7 @@ void checkCameraOptions(const CameraOptions& o) {
   };
   oneOf("--camera", o.model, {"pinhole", "thin", "thick", "lens"});
   if (o.fNumber) within("--fstop", *o.fNumber, 0.5, 1024.0, "the f-number");
+  if (!o.fNumberKeyframes.empty()) fNumberKeyframes(o.fNumberKeyframes);
   parseFocus(o.focus);
   if (!o.focusPixel.empty()) parseFocusPixel(o.focusPixel);
   parseSensor(o.sensor);
@@ -227,7 +233,11 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   exposure.shutterSeconds = shutterSeconds(o);
   if (o.iso) exposure.iso = *o.iso;
   const std::optional<ParaxialData> paraxial = lens ? std::optional(computeParaxial(*lens)) : std::nullopt;
-  const double fNumber = o.fNumber ? *o.fNumber : paraxial ? paraxial->fNumber : 2.8;
+  const std::optional<double> keyedFNumber =
+      o.fNumberKeyframes.empty()
+          ? o.fNumber
+          : std::optional<double>(valueAt(fNumberKeyframes(o.fNumberKeyframes), o.timeSeconds));
+  const double fNumber = keyedFNumber ? *keyedFNumber : paraxial ? paraxial->fNumber : 2.8;
   const ApertureShape aperture{o.blades, o.bladeRotationDegrees};
 
   // Focal length and the infinity-focus field of view without a lens.
@@ -311,9 +321,9 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
     return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
   }
   if (o.model == "thick") {
-    if (o.fNumber && *o.fNumber < paraxial->fNumber * (1 - 1e-9))
+    if (keyedFNumber && *keyedFNumber < paraxial->fNumber * (1 - 1e-9))
       warnings.warn(fmt::format("{}: f/{:g} is wider than the lens allows; the thick lens opens to it anyway",
-                                lensName, *o.fNumber));
+                                lensName, *keyedFNumber));
     ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
     p.aperture = aperture;
     p.lensName = lensName;

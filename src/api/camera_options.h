@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 
+#include "api/keyframes.h"
 #include "camera/camera.h"
 #include "core/ray.h"
 #include "core/warnings.h"
@@ -32,8 +33,9 @@ struct CameraOptions {
   std::string model = "pinhole";
   std::string lens;  // a path, or a name from the lens library; empty: none
   std::optional<double> fNumber;
-  std::string focus = "auto";  // also keyframes SECONDS:METRES,... (api/keyframes.h)
-  std::string focusPixel;      // "X,Y" raster pixel for --focus auto; empty: the centre
+  std::string fNumberKeyframes;  // --fstop SECONDS:N,...: read at timeSeconds, in place of fNumber
+  std::string focus = "auto";    // also keyframes SECONDS:METRES,... (api/keyframes.h)
+  std::string focusPixel;        // "X,Y" raster pixel for --focus auto; empty: the centre
   std::string sensor = "full-frame";
   int blades = 0;
   double bladeRotationDegrees = 0.0;
@@ -63,6 +65,8 @@ struct CameraOptions {
 
 // --focus: "auto" -> nullopt, "inf"/"infinity" -> infinity, else metres > 0.
 // Throws UsageError.
+// --fstop SECONDS:N,... (api/keyframes.h). Throws UsageError.
+Keyframes fNumberKeyframes(const std::string& text);
 // Keyframes (api/keyframes.h, "0:1.2,2:4") give their value at `seconds`.
 std::optional<double> parseFocus(const std::string& text, double seconds = 0.0);
 // --focus-pixel "X,Y" in pixels. Throws UsageError.

@@ -16,8 +16,32 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
       "--lens", o.lens,
       "lens prescription: a .dat/.lens/.json/.zmx file or a library name, e.g. --lens dgauss-50mm; the "
       "thin, thick and pinhole models then derive from it");
-  cmd.add_option("--fstop", o.fNumber, "f-number N, e.g. --fstop 2.8 (default: the lens wide open, else 2.8)")
-      ->check(numberIn(0.5, 1024.0, "the f-number"));
+  // A number, or keyframes SECONDS:N,... read at --time (api/keyframes.h).
+  cmd.add_option_function<std::string>(
+         "--fstop",
+         [&o](const std::string& text) {
+           if (isKeyframes(text)) {
+             o.fNumberKeyframes = text;
+             o.fNumber.reset();
+           } else {
+             o.fNumber = std::stod(text);
+             o.fNumberKeyframes.clear();
+           }
+         },
+         "f-number N, e.g. --fstop 2.8, or keyframes SECONDS:N,... read at --time, e.g. 0:2,1:8 (default: "
+         "the "
+         "lens wide open, else 2.8)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            if (!isKeyframes(text)) return numberIn(0.5, 1024.0, "the f-number")(text);
+            try {
+              fNumberKeyframes(text);
+              return "";
+            } catch (const UsageError& e) {
+              return e.message();
+            }
+          },
+          "N|KEYFRAMES"));
   cmd.add_option("--focus", o.focus,
                  "focus distance in metres from the entrance pupil, 'auto' (what the centre pixel, or "
                  "--focus-pixel, sees), 'inf', or keyframes SECONDS:METRES,... read at --time (a rack focus, "

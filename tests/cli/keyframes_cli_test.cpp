@@ -16,7 +16,7 @@ using cli::TempDir;
 const std::string kDofRow = std::string(LENSRT_SOURCE_DIR) + "/scenes/dof_row.gltf";
 
 Image renderFocus(const TempDir& dir, const std::string& name, const std::string& focus,
-                  const std::string& time, ImageMetadata& meta) {
+                  const std::string& time, ImageMetadata& meta, const std::string& fstop = "2") {
   std::vector<std::string> args{"render",
                                 kDofRow,
                                 "--camera",
@@ -24,7 +24,7 @@ Image renderFocus(const TempDir& dir, const std::string& name, const std::string
                                 "--lens",
                                 "dgauss-50mm",
                                 "--fstop",
-                                "2",
+                                fstop,
                                 "--focus",
                                 focus,
                                 "--res",
@@ -49,6 +49,17 @@ TEST(KeyframesCli, AKeyframedFocusIsTheFocusAtThatTime) {
     const Image b = renderFocus(dir, "b.exr", metres, "", plain);
     EXPECT_EQ(keyed["lensrt:focus_m"], metres) << time;
     EXPECT_EQ(a.pixels, b.pixels) << "at " << time << " s the focus is " << metres << " m";
+  }
+}
+
+TEST(KeyframesCli, AKeyframedFStopIsTheFStopAtThatTime) {
+  const TempDir dir;
+  for (const auto& [time, fstop] : {std::pair{"1", "4"}, std::pair{"3", "6"}}) {
+    ImageMetadata keyed, plain;
+    const Image a = renderFocus(dir, "a.exr", "2", time, keyed, "0:2,2:6");
+    const Image b = renderFocus(dir, "b.exr", "2", "", plain, fstop);
+    EXPECT_EQ(keyed["lensrt:f_number"], fstop) << time;
+    EXPECT_EQ(a.pixels, b.pixels) << "at " << time << " s the f-number is " << fstop;
   }
 }
 
