@@ -266,6 +266,65 @@ std::optional<LensRay> LensSystem::traceGhostFromScene(const LensRay& ray, int f
   return finished(o, d, transmittance);
 }
 
+LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, int maxReflections,
+                                              const std::function<double()>& random, double wavelengthNm,
+                                              std::vector<Vec3d>* path) const {
+  FlareTrace result;
+  if (!validInput<true>(ray)) return result;
+  const int count = surfaceCount();
+  const bool dLine = wavelengthNm == kWavelengthDNm;
+  const auto indexAfter = [&](int i) {
+    if (i < 0) return 1.0;
+    return dLine ? surfaces_[std::size_t(i)].ndAfter : surfaces_[std::size_t(i)].after.index(wavelengthNm);
+  };
+  const Coating coating = coating_.value_or(Coating::None);
+  Vec3d o = ray.origin, d = normalize(ray.direction);
+  double weight = ray.transmittance;
+  int i = count - 1;
+  bool towardScene = true;
+  while (true) {
+    if (i < 0) {
+      const std::optional<LensRay> out = finished(o, d, weight);
+      if (out) result = {FlareTrace::End::Scene, *out, result.reflections};
+      return result;
+    }
+    if (i >= count) {
+      result.end = FlareTrace::End::Film;
+      return result;
+    }
+    const TraceSurface& s = surfaces_[std::size_t(i)];
+    const double before = indexAfter(i - 1), after = indexAfter(i);
+    const double n1 = towardScene ? after : before, n2 = towardScene ? before : after;
+    // Hit the surface (its aperture blocks), then bend by hand.
+    const bool reached = towardScene ? step<true>(s, 0.0, o, d, path) : step<false>(s, 0.0, o, d, path);
+    if (!reached) return result;
+    if (!s.isStop && n1 != n2) {
+      const Vec3d local{o.x, o.y, o.z - s.z};
+      Vec3d n = s.asphere         ? asphereNormal(*s.asphere, local)
+                : s.radius == 0.0 ? Vec3d{0.0, 0.0, 1.0}
+                                  : Vec3d{local.x, local.y, local.z - s.radius} * s.invRadius;
+      n = normalize(n);
+      if (dot(n, d) > 0.0) n = -n;
+      const double cosI = std::min(1.0, -dot(n, d));
+      Vec3d refracted;
+      const bool passes = refract(d, n, n1, n2, refracted);
+      const double r = passes ? 1.0 - surfaceTransmittance(coating, n1, n2, cosI,
+                                                           std::min(1.0, -dot(n, refracted)), wavelengthNm)
+                              : 1.0;
+      if (result.reflections < maxReflections && random() < r) {
+        d = d + n * (2.0 * cosI);
+        towardScene = !towardScene;
+        ++result.reflections;
+      } else {
+        if (!passes) return result;  // total internal reflection beyond the reflections allowed
+        if (result.reflections >= maxReflections) weight *= 1.0 - r;
+        d = refracted;
+      }
+    }
+    i += towardScene ? -1 : 1;
+  }
+}
+
 void LensSystem::traceFromFilm(std::span<const LensRay> rays, std::span<std::optional<LensRay>> out) const {
   if (out.size() != rays.size()) throw std::invalid_argument("traceFromFilm: as many outputs as rays");
   // Coatings: the one-ray trace, which carries the transmittance.

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -81,7 +82,31 @@ class LensSystem {
                                              double wavelengthNm = kWavelengthDNm,
                                              std::vector<Vec3d>* path = nullptr) const;
 
+  // Stray light from the film side (lens flare): at every surface where the
+  // index changes the ray reflects with the Fresnel reflectance R (the
+  // lens's coating, bare glass without one) and refracts otherwise, chosen by
+  // `random` (uniform in [0, 1)) so that the weight stays exact: up to
+  // `maxReflections` reflections, after which it refracts with weight 1 - R.
+  // The stop and the rims block as in every trace. A ray ends toward the
+  // scene (even reflections), back at the film (odd: the film absorbs it),
+  // or blocked.
+  struct FlareTrace {
+    enum class End { Scene, Film, Blocked };
+    End end = End::Blocked;
+    LensRay ray;  // toward the scene (End::Scene): its transmittance is the weight
+    int reflections = 0;
+  };
+  template <class Random>
+  FlareTrace traceFromFilmWithFlare(const LensRay& ray, int maxReflections, Random&& random,
+                                    double wavelengthNm = kWavelengthDNm,
+                                    std::vector<Vec3d>* path = nullptr) const {
+    return flareTrace(
+        ray, maxReflections, [&random] { return double(random()); }, wavelengthNm, path);
+  }
+
  private:
+  FlareTrace flareTrace(const LensRay& ray, int maxReflections, const std::function<double()>& random,
+                        double wavelengthNm, std::vector<Vec3d>* path) const;
   // Everything about a surface that does not depend on the ray, laid out for
   // the trace loop.
   struct TraceSurface {
