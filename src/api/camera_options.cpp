@@ -155,6 +155,15 @@ void checkCameraOptions(const CameraOptions& o) {
   if (o.iso) within("--iso", *o.iso, 1.0, 1e7, "ISO speed");
   oneOf("--dispersion", o.dispersion, {"on", "off"});
   if (!o.coatings.empty()) oneOf("--coatings", o.coatings, {"none", "single", "multi"});
+  oneOf("--flare", o.flare, {"on", "off"});
+  if (o.flareBounces < 0 || o.flareBounces > 4 || o.flareBounces % 2 != 0)
+    throw UsageError(
+        "--flare-bounces",
+        fmt::format("expected 0, 2 or 4 reflections (a ghost takes two), got {}", o.flareBounces));
+  if (o.flare == "on" && o.model != "lens")
+    throw UsageError("--flare", "stray light comes from the full lens's surfaces: it needs --camera lens");
+  if (o.flare == "on" && (o.blades != 0 || !o.apertureMask.empty()))
+    throw UsageError("--flare", "does not take --blades or --aperture-mask yet (the round stop only)");
   if (!o.film.empty()) oneOf("--film", o.film, {"radiance", "irradiance"});
   oneOf("--spectral", o.spectral, {"on", "off"});
   checkColourOptions(o);
@@ -340,6 +349,11 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   p.aperture = aperture;
   p.dispersion = o.dispersion == "on";
   p.coatings = parseCoating(o.coatings);
+  if (o.flare == "on") {
+    p.flareReflections = o.flareBounces;
+    // Stray light needs reflecting surfaces: bare glass unless --coatings says otherwise.
+    if (!p.coatings) p.coatings = Coating::None;
+  }
   return std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
 }
 

@@ -93,6 +93,15 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "quarter-wave MgF2 layer at 550 nm) or multi (0.5% reflectance per surface); default: "
                  "lossless glass, as pbrt")
       ->check(CLI::IsMember({"none", "single", "multi"}));
+  cmd.add_option("--flare", o.flare,
+                 "on: stray light in the full lens (--camera lens): every surface reflects its Fresnel share "
+                 "(bare glass unless --coatings), so ghosts of bright sources and veiling glare appear; off "
+                 "(default)")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd.add_option("--flare-bounces", o.flareBounces,
+                 "with --flare on, the most reflections a path takes in the lens: 0, 2 (default: the ghosts) "
+                 "or 4")
+      ->check(CLI::IsMember({0, 2, 4}));
   cmd.add_option("--film", o.film,
                  "what a pixel records: radiance (the mean radiance along the camera rays, no cos^4, no "
                  "bellows factor, no exposure scale: pbrt's, Cycles' and Mitsuba's pinhole; the pinhole's "

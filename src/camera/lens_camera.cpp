@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 
 #include "camera/film_mapping.h"
+#include "core/constants.h"
 #include "optics/chromatic.h"
 #include "optics/focus.h"
 
@@ -43,6 +46,7 @@ std::string LensCamera::describe() const {
                 focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
   // Part of the render's identity (merge, resume): on and off differ, and so do coatings.
   return std::string(buf) + (dispersion_ ? " dispersion=on" : "") +
+         (params_.flareReflections ? " flare=" + std::to_string(*params_.flareReflections) : std::string()) +
          (params_.coatings ? " coatings=" + coatingName(*params_.coatings) : std::string()) +
          (params_.mask ? " mask=" + params_.mask->describe() : std::string());
 }
@@ -118,7 +122,60 @@ std::optional<CameraRay> LensCamera::cameraRay(const std::optional<LensRay>& out
   return CameraRay{Ray{Vec3f(o), Vec3f(out->direction)}, float(weight * out->transmittance)};
 }
 
+namespace {
+
+// The flare trace's choices from the sample's own numbers: a stream keyed by
+// the bits of its film, lens and wavelength values (deterministic, and
+// independent of the sampler's dimensions, which stay as without flare).
+class SampleStream {
+ public:
+  explicit SampleStream(const CameraSample& s) {
+    for (const float v : {s.film.x, s.film.y, s.lens.x, s.lens.y, s.wavelengthNm})
+      state_ = mix(state_ ^ std::bit_cast<std::uint32_t>(v));
+  }
+  double operator()() { return double(mix(state_ += 0x9e3779b97f4a7c15ULL) >> 11) * 0x1.0p-53; }
+
+ private:
+  static std::uint64_t mix(std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  std::uint64_t state_ = 0x666c617265ULL;
+};
+
+}  // namespace
+
+std::optional<CameraRay> LensCamera::flareRay(const CameraSample& s) const {
+  const Vec3d p = filmPointMm(s.film);
+  // Half the samples from the bounds, half uniform over a disc 20% wider
+  // than the rear element (a curved rear surface reaches past its rim's
+  // radius on the plane); the pdf is the mixture's, so both count exactly.
+  const double discRadius = 1.2 * lens_->rearApertureRadius();
+  Vec2d point;
+  if (s.lens.x < 0.5f) {
+    const std::optional<PupilSample> ps = bounds_->sample({p.x, p.y}, {2.0 * s.lens.x, s.lens.y});
+    if (!ps) return std::nullopt;
+    point = {ps->point.x, ps->point.y};
+  } else {
+    const double r = discRadius * std::sqrt(2.0 * s.lens.x - 1.0), phi = 2.0 * kPi * s.lens.y;
+    point = {r * std::cos(phi), r * std::sin(phi)};
+  }
+  const double inDisc = point.x * point.x + point.y * point.y <= discRadius * discRadius ? 1.0 : 0.0;
+  const double pdf = 0.5 * bounds_->pdf({p.x, p.y}, point) + 0.5 * inDisc / (kPi * discRadius * discRadius);
+  if (!(pdf > 0.0)) return std::nullopt;
+  const Vec3d target{point.x, point.y, bounds_->planeZ()};
+  const double weight = scale_ * irradianceIntegrand(p, target) / pdf;
+  const double wavelength = tracesWavelengths() ? double(s.wavelengthNm) : kWavelengthDNm;
+  SampleStream random(s);
+  const LensSystem::FlareTrace t =
+      lens_->traceFromFilmWithFlare({p, target - p}, *params_.flareReflections, random, wavelength);
+  if (t.end != LensSystem::FlareTrace::End::Scene) return std::nullopt;
+  return cameraRay(t.ray, weight);
+}
+
 std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& s) const {
+  if (params_.flareReflections) return flareRay(s);
   const PupilRay pr = pupilRay(s);
   if (pr.weight == 0.0) return std::nullopt;
   const double wavelength = dispersion_ ? double(s.wavelengthNm) : kWavelengthDNm;
@@ -127,7 +184,8 @@ std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& 
 
 void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
                                          std::span<std::optional<CameraRay>> out) const {
-  if (polygon_ || params_.mask) return Camera::generateCameraSpaceRays(samples, out);
+  if (polygon_ || params_.mask || params_.flareReflections)
+    return Camera::generateCameraSpaceRays(samples, out);
   // In chunks on the stack: the bounds sample and the lens traces a chunk's
   // rays together.
   constexpr std::size_t kChunk = 4 * LensSystem::kTraceLanes;

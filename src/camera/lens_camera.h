@@ -27,6 +27,10 @@ struct LensCameraParams {
   // A grey-scale mask over the stop (camera/aperture_mask.h): each ray's
   // weight times the mask where it crosses the stop. Null: the open stop.
   std::shared_ptr<const ApertureMask> mask;
+  // Stray light (lens flare): the most reflections a path takes in the lens
+  // (LensSystem::traceFromFilmWithFlare), none: off. Needs coatings set (the
+  // reflectance) and neither blades nor a mask.
+  std::optional<int> flareReflections;
 };
 
 // The full element stack (Kolb et al. 1995): film point -> a point inside the
@@ -47,7 +51,11 @@ class LensCamera final : public Camera {
 
   std::string describe() const override;
   CameraInfo info() const override;
-  bool tracesWavelengths() const override { return dispersion_; }
+  // With flare and a single-layer coating the reflectance depends on the
+  // wavelength: each sample is traced at its own.
+  bool tracesWavelengths() const override {
+    return dispersion_ || (params_.flareReflections && params_.coatings == Coating::Single);
+  }
   const LensSystem& lens() const { return *lens_; }
   const ExitPupilBounds& bounds() const { return *bounds_; }
   double fNumber() const { return fNumber_; }
@@ -82,6 +90,10 @@ class LensCamera final : public Camera {
   // the mask's transmittance at the stop when there is one.
   std::optional<LensRay> traceLens(const LensRay& in, double wavelengthNm) const;
   std::optional<CameraRay> cameraRay(const std::optional<LensRay>& out, double weight) const;
+  // --flare on: a pupil-plane point from a mixture of the exit pupil bounds
+  // (the image's rays) and the whole rear element (the ghosts' rays, which
+  // leave the film outside the bounds), and the stochastic trace.
+  std::optional<CameraRay> flareRay(const CameraSample& sample) const;
 
   LensCameraParams params_;
   Exposure exposure_;
