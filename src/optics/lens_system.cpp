@@ -204,6 +204,15 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
   return finished(o, d, transmittance);
 }
 
+Vec3d LensSystem::facingNormal(const TraceSurface& s, const Vec3d& hit, const Vec3d& d) {
+  const Vec3d local{hit.x, hit.y, hit.z - s.z};
+  Vec3d n = s.asphere         ? asphereNormal(*s.asphere, local)
+            : s.radius == 0.0 ? Vec3d{0.0, 0.0, 1.0}
+                              : Vec3d{local.x, local.y, local.z - s.radius} * s.invRadius;
+  n = normalize(n);
+  return dot(n, d) > 0.0 ? -n : n;
+}
+
 std::optional<LensRay> LensSystem::traceGhostFromScene(const LensRay& ray, int first, int second,
                                                        double wavelengthNm, std::vector<Vec3d>* path) const {
   const int count = surfaceCount();
@@ -237,13 +246,7 @@ std::optional<LensRay> LensSystem::traceGhostFromScene(const LensRay& ray, int f
   };
   const auto reflect = [&](int i, bool forward) {
     if (!hit(i, forward, 0.0)) return false;
-    const TraceSurface& s = surfaces_[std::size_t(i)];
-    const Vec3d local{o.x, o.y, o.z - s.z};
-    Vec3d n = s.asphere         ? asphereNormal(*s.asphere, local)
-              : s.radius == 0.0 ? Vec3d{0.0, 0.0, 1.0}
-                                : Vec3d{local.x, local.y, local.z - s.radius} * s.invRadius;
-    n = normalize(n);
-    if (dot(n, d) > 0.0) n = -n;
+    const Vec3d n = facingNormal(surfaces_[std::size_t(i)], o, d);
     const double cosI = std::min(1.0, -dot(n, d));
     // The Fresnel reflectance 1 - T, with the refraction angle the surface
     // would have given (1 under total internal reflection).
@@ -299,12 +302,7 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, int maxReflect
     const bool reached = towardScene ? step<true>(s, 0.0, o, d, path) : step<false>(s, 0.0, o, d, path);
     if (!reached) return result;
     if (!s.isStop && n1 != n2) {
-      const Vec3d local{o.x, o.y, o.z - s.z};
-      Vec3d n = s.asphere         ? asphereNormal(*s.asphere, local)
-                : s.radius == 0.0 ? Vec3d{0.0, 0.0, 1.0}
-                                  : Vec3d{local.x, local.y, local.z - s.radius} * s.invRadius;
-      n = normalize(n);
-      if (dot(n, d) > 0.0) n = -n;
+      const Vec3d n = facingNormal(s, o, d);
       const double cosI = std::min(1.0, -dot(n, d));
       Vec3d refracted;
       const bool passes = refract(d, n, n1, n2, refracted);

@@ -130,6 +130,8 @@ class LensSystem {
     double ndAfter = 1.0;  // index after the surface (toward the film) at the d line
     Dispersion after;
   };
+  // The unit normal of surface `s` at `hit` (lens space), facing against `d`.
+  static Vec3d facingNormal(const TraceSurface& s, const Vec3d& hit, const Vec3d& d);
   template <bool kFromFilm>
   static bool asphereStep(const TraceSurface& s, double eta, Vec3d& o, Vec3d& d, std::vector<Vec3d>* path);
   template <bool kFromFilm>
