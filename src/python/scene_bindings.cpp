@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "api/keyframes.h"
 #include "api/output_file.h"
 #include "api/render_options.h"
 #include "api/render_request.h"
@@ -158,7 +159,8 @@ class PyScene {
                                                    "aperture_mask", "focal_length",
                                                    "exposure",      "shutter",
                                                    "iso",           "dispersion",
-                                                   "coatings",      "film",
+                                                   "coatings",      "flare",
+                                                   "flare_bounces", "film",
                                                    "spectral",      "sensor_response",
                                                    "white_balance", "output_space",
                                                    "noise",         "sensor_params",
@@ -181,7 +183,11 @@ class PyScene {
     c.lensDir = LENSRT_LENS_DIR;
     if (const py::object v = get("camera"); !v.is_none()) c.model = toText(v, "camera");
     if (const py::object v = get("lens"); !v.is_none()) c.lens = toPathText(v, "lens");
-    c.fNumber = toOptionalDouble(get("fstop"), "fstop");
+    // A number, or keyframes "SECONDS:N,..." read at the scene's time.
+    if (const py::object v = get("fstop"); py::isinstance<py::str>(v) && isKeyframes(toText(v, "fstop")))
+      c.fNumberKeyframes = toText(v, "fstop");
+    else
+      c.fNumber = toOptionalDouble(v, "fstop");
     // "auto", "inf", or metres as text or a number.
     if (const py::object v = get("focus"); !v.is_none()) c.focus = toDistanceText(v, "focus");
     c.focusPixel = toFocusPixel(get("focus_pixel"));
@@ -198,6 +204,10 @@ class PyScene {
     if (const py::object v = get("dispersion"); !v.is_none())
       c.dispersion = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "dispersion");
     if (const py::object v = get("coatings"); !v.is_none()) c.coatings = toText(v, "coatings");
+    if (const py::object v = get("flare"); !v.is_none())
+      c.flare = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "flare");
+    if (const py::object v = get("flare_bounces"); !v.is_none())
+      c.flareBounces = int(toInteger(v, "flare_bounces", 0, 4));
     if (const py::object v = get("film"); !v.is_none()) c.film = toText(v, "film");
     if (const py::object v = get("spectral"); !v.is_none())
       c.spectral = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "spectral");
@@ -379,7 +389,7 @@ index to play one of them (None: all).)doc")
        env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
        exposure="normalized", shutter=None, iso=None, dispersion="on", coatings=None,
-       film=None, spectral="on", sensor_response=None, white_balance=None,
+       flare="off", flare_bounces=2, film=None, spectral="on", sensor_response=None, white_balance=None,
        output_space="srgb", noise="off", sensor_params=None, raw=None, cfa="RGGB",
        progress=None) -> RenderResult
 
@@ -388,7 +398,8 @@ settings and seed. Keywords only, each the flag of the same name:
   camera: "pinhole", "thin", "thick" or "lens" (the full lens).
   lens: a library name (e.g. "dgauss-50mm") or a lens file; the simpler models
     then take its focal length, f-number and pupils.
-  fstop: f-number (None: the lens wide open, or f/2.8 without a lens).
+  fstop: f-number (None: the lens wide open, or f/2.8 without a lens), or
+    keyframes "SECONDS:N,..." read at the scene's time.
   focus: distance in metres, "inf", or "auto" (what focus_pixel sees; default).
   focus_pixel: (x, y) raster pixel for focus="auto" (None: the centre).
   sensor: "full-frame", "aps-c", "mft", "1in", "WxH" in mm, or a (w, h) pair in mm.
@@ -412,6 +423,7 @@ settings and seed. Keywords only, each the flag of the same name:
   blades, blade_rotation (deg), aperture_mask (a grey-scale image file),
   focal_length (mm), exposure ("normalized" or "physical"), shutter (seconds),
   iso, dispersion ("on"/"off" or bool), coatings ("none", "single", "multi"),
+  flare ("on"/"off" or bool: stray light in the full lens), flare_bounces (0, 2, 4),
   film ("radiance" or "irradiance"): as the flags of `lensrt render --help`.
   spectral: "on"/True (default) carries light at four wavelengths per sample
     (colours upsampled to spectra, the CIE 1931 observer, sRGB); "off"/False
