@@ -78,19 +78,6 @@ void checkCameraSpace(const CameraOptions& o, const SensorResponse& sensor) {
                      "(choose --sensor-response, or srgb, rec2020, acescg, xyz)");
 }
 
-// What a sensor's curves record of a light (a reflectance of 1 under it),
-// integrated as the renderer integrates (FilmResponse::make): the product of
-// the two tables, each linear between whole nanometres.
-Vec3d recordedBy(const SensorResponse& sensor, const std::function<double(double)>& light) {
-  Vec3d recorded{0, 0, 0};
-  for (double nm = FilmResponse::kMinNm; nm < FilmResponse::kMaxNm; nm += 1) {
-    const Vec3d s0 = sensor.at(nm), s1 = sensor.at(nm + 1);
-    const double a = light(nm), b = light(nm + 1);
-    recorded += (s0 * (2 * a + b) + s1 * (a + 2 * b)) / 6.0;
-  }
-  return recorded;
-}
-
 // The camera's own RGB beside the film's (sensor/camera_rgb.h). `green`:
 // what its green records of D65 at Y = 1, camera RGB's unit; `neutral`: what
 // it records of the white balance's illuminant.
@@ -196,7 +183,7 @@ FilmColour filmColour(const CameraOptions& o, const std::optional<Rgb>& sceneLig
     const Vec3d c = sensor.at(nm);
     return (c.x + c.y + c.z) * d65(nm);
   };
-  const Vec3d d65Recorded = recordedBy(sensor, d65AtUnitY);
+  const Vec3d d65Recorded = FilmResponse::recorded(curves, d65AtUnitY);
   std::shared_ptr<const FilmResponse> film;
   if (cameraSpace) {
     // The camera's own RGB, unbalanced as a raw file is (the white balance
@@ -212,7 +199,7 @@ FilmColour filmColour(const CameraOptions& o, const std::optional<Rgb>& sceneLig
     film = std::make_shared<const FilmResponse>(FilmResponse::make(
         info, curves, space.xyzToRgb * adapt * toXyz, neutral, space.xyzToRgb * target, samplingWeight));
   }
-  return {film, cameraRgb(sensor, *film, d65Recorded.y, recordedBy(sensor, neutral), d65AtUnitY)};
+  return {film, cameraRgb(sensor, *film, d65Recorded.y, FilmResponse::recorded(curves, neutral), d65AtUnitY)};
 }
 
 Mat3d fitCameraToXyz(const SensorResponse& sensor, const std::function<double(double)>& illuminant) {

@@ -77,12 +77,10 @@ FilmResponse FilmResponse::make(Info info, const std::function<Vec3d(double)>& s
     white[i] = neutral(nm);
   }
   // What the film records of the neutral white, integrated as the renderer's
-  // samples integrate it: the product of the two linearly interpolated tables.
-  Vec3d recorded{0, 0, 0};
-  for (std::size_t i = 0; i + 1 < rgb.size(); ++i) {
-    const double a = white[i], b = white[i + 1];
-    recorded += (rgb[i] * (2 * a + b) + rgb[i + 1] * (a + 2 * b)) / 6.0;
-  }
+  // samples integrate it.
+  const Vec3d recorded =
+      FilmResponse::recorded([&rgb](double nm) { return rgb[static_cast<std::size_t>(nm - kMinNm)]; },
+                             [&white](double nm) { return white[static_cast<std::size_t>(nm - kMinNm)]; });
   const Vec3d scale{neutralTarget.x / recorded.x, neutralTarget.y / recorded.y, neutralTarget.z / recorded.z};
   if (!std::isfinite(scale.x) || !std::isfinite(scale.y) || !std::isfinite(scale.z))
     throw std::invalid_argument("FilmResponse: the film records no white in some channel");
@@ -91,6 +89,19 @@ FilmResponse FilmResponse::make(Info info, const std::function<Vec3d(double)>& s
   FilmResponse film(std::move(info), std::move(curves), d65AtYOne(), samplingWeight);
   film.sensorToOutput_ = Mat3d::diagonal(scale) * toOutput;
   return film;
+}
+
+Vec3d FilmResponse::recorded(const std::function<Vec3d(double)>& curves,
+                             const std::function<double(double)>& light) {
+  // Exact for the product of two linear pieces on each 1 nm step.
+  Vec3d sum{0, 0, 0};
+  for (int i = 0; i + 1 < kSamples; ++i) {
+    const double nm = kMinNm + double(i);
+    const Vec3d s0 = curves(nm), s1 = curves(nm + 1);
+    const double a = light(nm), b = light(nm + 1);
+    sum += (s0 * (2 * a + b) + s1 * (a + 2 * b)) / 6.0;
+  }
+  return sum;
 }
 
 namespace {

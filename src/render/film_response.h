@@ -54,6 +54,11 @@ class FilmResponse {
   static FilmResponse make(Info info, const std::function<Vec3d(double)>& sensor, const Mat3d& toOutput,
                            const std::function<double(double)>& neutral, const Vec3d& neutralTarget,
                            const std::function<double(double)>& samplingWeight);
+  // What curves record of a light: the integral over [kMinNm, kMaxNm] of
+  // the product of the two tables linearly interpolated between whole nm,
+  // as the renderer's samples integrate it.
+  static Vec3d recorded(const std::function<Vec3d(double)>& curves,
+                        const std::function<double(double)>& light);
   // The CIE observer's sampling weight: its linear sRGB curves'
   // |r| + |g| + |b| under D65, whatever the output space or white balance.
   static double cie1931SamplingWeight(double nm);
