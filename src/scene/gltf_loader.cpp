@@ -451,8 +451,6 @@ class Traversal {
   }
 
   void placeMesh(int index, const tinygltf::Node& node, const Transform& world) {
-    if (static_cast<std::size_t>(node.mesh) >= ctx_.model.meshes.size())
-      ctx_.fail("mesh " + std::to_string(node.mesh) + " does not exist");
     // A mesh is converted once per set of morph weights its nodes give it
     // (the animation's at this time, the node's, or the mesh's own).
     const auto pose = animated_.find(index);

@@ -103,6 +103,12 @@ bool degenerate(const std::vector<Vec3f>& p, const std::array<std::uint32_t, 3>&
   return lengthSquared(cross(b - a, c - a)) == 0.0;
 }
 
+const tinygltf::Mesh& meshAt(const Context& ctx, int index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= ctx.model.meshes.size())
+    ctx.fail("mesh " + std::to_string(index) + " does not exist");
+  return ctx.model.meshes[static_cast<std::size_t>(index)];
+}
+
 }  // namespace
 
 // Adds the morph targets' deltas, in proportion to their weights, to the
@@ -194,9 +200,7 @@ void applySkin(const Context& ctx, const tinygltf::Primitive& prim,
 std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& meshes, MeshStats& stats,
                              const std::vector<double>& morphWeights,
                              const std::vector<Transform::Matrix>* joints) {
-  if (index < 0 || static_cast<std::size_t>(index) >= ctx.model.meshes.size())
-    ctx.fail("mesh " + std::to_string(index) + " does not exist");
-  const tinygltf::Mesh& gm = ctx.model.meshes[static_cast<std::size_t>(index)];
+  const tinygltf::Mesh& gm = meshAt(ctx, index);
   // (Not "#" + std::to_string: GCC 12 warns falsely about it, bug 105329.)
   const std::string baseName = gm.name.empty() ? std::string("#").append(std::to_string(index)) : gm.name;
   std::vector<int> result;
@@ -307,7 +311,7 @@ std::vector<int> convertMesh(const Context& ctx, int index, std::vector<Mesh>& m
 }
 
 std::vector<double> morphWeights(const Context& ctx, const tinygltf::Node& node, int mesh) {
-  const tinygltf::Mesh& gm = ctx.model.meshes[static_cast<std::size_t>(mesh)];
+  const tinygltf::Mesh& gm = meshAt(ctx, mesh);
   std::size_t targets = 0;
   for (const tinygltf::Primitive& prim : gm.primitives) targets = std::max(targets, prim.targets.size());
   const std::vector<double>& weights = !node.weights.empty() ? node.weights : gm.weights;
