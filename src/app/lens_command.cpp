@@ -145,14 +145,18 @@ CommandAction addLensInfoCommand(CLI::App& lensApp, const CommandContext&) {
   info->add_option("--coc", options->circleOfConfusionMm,
                    "Circle of confusion in mm (default: diagonal / 1500)")
       ->check(aNumber("mm"));
-  info->add_option(
-          "--coatings", options->coatings,
-          "Surface coatings for the axial transmittance: none (uncoated), single (quarter-wave MgF2 at "
-          "550 nm) or multi (0.5% per surface)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"none", "single", "multi"}));
+  addLensCoatingsOption(*info, options->coatings, "for the axial transmittance");
   info->add_flag("--json", options->json, "Print JSON (distances in mm unless named _m)");
   return [options] { return runInfo(*options); };
+}
+
+void addLensCoatingsOption(CLI::App& cmd, std::string& coatings, const std::string& what) {
+  cmd.add_option("--coatings", coatings,
+                 fmt::format("Surface coatings {}: none (uncoated), single (quarter-wave MgF2 at 550 nm) or "
+                             "multi (0.5% per surface)",
+                             what))
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "single", "multi"}));
 }
 
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {

@@ -55,13 +55,7 @@ CommandAction addLensGhostsCommand(CLI::App& lensApp, const CommandContext&) {
       ->add_option("lens", options->lens,
                    "Lens file (.lens, .json, .dat, .zmx) or library name, e.g. dgauss-50mm")
       ->required();
-  ghosts
-      ->add_option(
-          "--coatings", options->coatings,
-          "Surface coatings: none (uncoated), single (quarter-wave MgF2 at 550 nm) or multi (0.5% per "
-          "surface)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"none", "single", "multi"}));
+  addLensCoatingsOption(*ghosts, options->coatings, "for the ghosts' strengths");
   ghosts->add_flag("--json", options->json, "Print JSON (distances in mm, a focus at infinity as null)");
   return [options] {
     const UserLens user = loadUserLens(options->lens, LENSRT_LENS_DIR);

@@ -4,11 +4,15 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
 
 #include "app/command.h"
 
 namespace lensrt {
 
+// lens_command.cpp: the `--coatings none|single|multi` option of `lens info`
+// and `lens ghosts`, `what` saying what the coatings change there.
+void addLensCoatingsOption(CLI::App& cmd, std::string& coatings, const std::string& what);
 // lens_command.cpp: `lens info FILE [--sensor WxH] [--fstop N] [--focus M] [--json]`.
 CommandAction addLensInfoCommand(CLI::App& lens, const CommandContext& context);
 // Hooks for later files (lens_diagram_command.cpp, lens_plot_command.cpp);
