@@ -86,7 +86,10 @@ Vec2d parseSensor(const std::string& text) {
   return {*w, *h};
 }
 
-double parseShutter(const std::string& text) {
+namespace {
+
+// Seconds >= 0 from "0.004", "1/250" or "2", for `flag`.
+double parseSeconds(const std::string& text, const char* flag) {
   const std::size_t slash = text.find('/');
   std::optional<double> v;
   if (slash == std::string::npos) {
@@ -95,9 +98,51 @@ double parseShutter(const std::string& text) {
     const auto a = parseDouble(text.substr(0, slash)), b = parseDouble(text.substr(slash + 1));
     if (a && b && *b > 0.0) v = *a / *b;
   }
-  if (!v || !(*v > 0.0) || *v > 1e6)
-    throw UsageError("--shutter", "expected a time in seconds > 0 (e.g. 0.01 or 1/100), got '" + text + "'");
+  if (!v || !(*v >= 0.0) || *v > 1e6)
+    throw UsageError(flag,
+                     fmt::format("expected a time in seconds >= 0 (e.g. 0.01 or 1/100), got '{}'", text));
   return *v;
+}
+
+}  // namespace
+
+double parseShutter(const std::string& text) {
+  return parseSeconds(text, "--shutter");
+}
+
+double recordedSpanSeconds(const CameraOptions& o) {
+  return shutterTiming(o).spanSeconds();
+}
+
+ShutterTiming shutterTiming(const CameraOptions& o) {
+  ShutterTiming t;
+  t.shutterSeconds = shutterSeconds(o);
+  if (!o.rollingShutter.empty()) t.readoutSeconds = parseSeconds(o.rollingShutter, "--rolling-shutter");
+  static const std::pair<const char*, ShutterTiming::Readout> kReadouts[] = {
+      {"top-down", ShutterTiming::Readout::TopDown},
+      {"bottom-up", ShutterTiming::Readout::BottomUp},
+      {"left-right", ShutterTiming::Readout::LeftRight},
+      {"right-left", ShutterTiming::Readout::RightLeft}};
+  const auto readout = std::find_if(std::begin(kReadouts), std::end(kReadouts),
+                                    [&](const auto& r) { return o.readout == r.first; });
+  if (readout == std::end(kReadouts))
+    throw UsageError(
+        "--readout",
+        fmt::format("expected top-down, bottom-up, left-right or right-left, got '{}'", o.readout));
+  t.readout = readout->second;
+  if (o.shutterCurve != "box") {
+    const std::string prefix = "trapezoid:";
+    const std::optional<double> f =
+        o.shutterCurve.starts_with(prefix) ? parseDouble(o.shutterCurve.substr(prefix.size())) : std::nullopt;
+    if (!f || !(*f > 0) || *f > 0.5)
+      throw UsageError(
+          "--shutter-curve",
+          fmt::format("expected box or trapezoid:F with 0 < F <= 0.5 (the share of the interval the "
+                      "shutter takes to open, and to close), got '{}'",
+                      o.shutterCurve));
+    t.rampFraction = *f;
+  }
+  return t;
 }
 
 FilmGeometry cameraFilm(const CameraOptions& options, int width, int height) {
@@ -152,6 +197,9 @@ void checkCameraOptions(const CameraOptions& o) {
   if (o.focalLengthMm) within("--focal-length", *o.focalLengthMm, 0.1, 10000.0, "mm");
   oneOf("--exposure", o.exposure, {"normalized", "physical"});
   if (!o.shutter.empty()) parseShutter(o.shutter);
+  shutterTiming(o);
+  if (o.exposure == "physical" && !(shutterSeconds(o) > 0))
+    throw UsageError("--shutter", "--exposure physical records no light in a shutter time of 0");
   if (o.iso) within("--iso", *o.iso, 1.0, 1e7, "ISO speed");
   oneOf("--dispersion", o.dispersion, {"on", "off"});
   if (!o.coatings.empty()) oneOf("--coatings", o.coatings, {"none", "single", "multi"});
@@ -209,8 +257,8 @@ std::unique_ptr<Camera> makeCamera(const CameraOptions& o, const CameraDesc& glt
     throw UsageError("--exposure",
                      "physical exposure needs the irradiance film: add --film irradiance "
                      "(the pinhole's default film records radiance)");
-  if (o.exposure != "physical" && (!o.shutter.empty() || o.iso))
-    warnings.warn("--shutter and --iso only apply with --exposure physical; ignored");
+  if (o.exposure != "physical" && o.iso)
+    warnings.warn("--iso only applies with --exposure physical; ignored");
 
   // The lens, scaled to --focal-length when both are given.
   std::optional<UserLens> user;

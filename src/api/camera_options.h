@@ -25,6 +25,7 @@
 #include "core/ray.h"
 #include "core/warnings.h"
 #include "image/image.h"
+#include "render/shutter_timing.h"
 #include "scene/scene_desc.h"
 
 namespace lensrt {
@@ -42,7 +43,13 @@ struct CameraOptions {
   std::string apertureMask;  // grey-scale image over the full lens's stop; empty: none
   std::optional<double> focalLengthMm;
   std::string exposure = "normalized";
-  std::string shutter;  // seconds, "0.01" or "1/100"; empty: 1/100
+  std::string shutter;  // seconds, "0.01" or "1/100"; empty: 1/100; 0: an instant
+  // Time (render/shutter_timing.h): --shutter-curve box|trapezoid:F,
+  // --rolling-shutter SECONDS (empty: a global shutter) read out --readout
+  // top-down|bottom-up|left-right|right-left.
+  std::string shutterCurve = "box";
+  std::string rollingShutter;
+  std::string readout = "top-down";
   std::optional<double> iso;
   std::string dispersion = "on";  // the full lens traces each sample at its wavelength
   std::string coatings;           // --coatings none|single|multi for the full lens; empty: lossless glass
@@ -81,6 +88,12 @@ Vec2d parseSensor(const std::string& text);
 double parseShutter(const std::string& text);
 // --shutter of these options, else the exposure's default (1/100 s).
 double shutterSeconds(const CameraOptions& options);
+// How long a frame records the scene (--shutter plus --rolling-shutter's
+// readout): the span a moving scene is loaded for.
+double recordedSpanSeconds(const CameraOptions& options);
+// When each sample is taken (render/shutter_timing.h), from --shutter,
+// --shutter-curve, --rolling-shutter and --readout. Throws UsageError.
+ShutterTiming shutterTiming(const CameraOptions& options);
 
 // The film: the sensor cropped to the raster's aspect ratio (square pixels),
 // as a camera's video or crop modes do.

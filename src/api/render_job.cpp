@@ -175,6 +175,25 @@ std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warn
   }
 }
 
+std::optional<ShutterTiming> RenderJob::shutterTiming(const CameraOptions& options,
+                                                      Warnings& warnings) const {
+  const ShutterTiming timing = lensrt::shutterTiming(options);
+  if (scene_->geometry().desc().motionSteps > 0) {
+    // The scene was loaded for the same span (the caller's SceneOptions).
+    if (std::abs(timing.spanSeconds() - scene_->options().time.spanSeconds) >
+        1e-9 * std::max(1.0, timing.spanSeconds()))
+      throw UsageError("--shutter", fmt::format("the scene was loaded for motion over {:g} s, not {:g} s",
+                                                scene_->options().time.spanSeconds, timing.spanSeconds()));
+    return timing;
+  }
+  if (!options.rollingShutter.empty() || options.shutterCurve != "box")
+    warnings.warn(fmt::format(
+        "{}: nothing in the scene moves, so the rolling shutter and shutter curve change "
+        "nothing",
+        scene_->geometry().desc().pose.empty() ? "the scene has no animation" : "over the shutter"));
+  return std::nullopt;
+}
+
 RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& settings, bool quiet) const {
   const auto start = std::chrono::steady_clock::now();
   RenderJobResult result;
@@ -222,7 +241,8 @@ ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& se
            "res={}x{} max_depth={} environment={} channels={} transport={}{}{}", width_, height_,
            frame_.maxDepth, environment_->describe(), aovs, transportDescription(settings.filmResponse.get()),
            adaptive,
-           scene_->geometry().desc().pose.empty() ? std::string() : " " + scene_->geometry().desc().pose)},
+           scene_->geometry().desc().pose.empty() ? std::string() : " " + scene_->geometry().desc().pose,
+           settings.timing ? " shutter=" + settings.timing->describe() : std::string())},
       {"lensrt:seed", std::to_string(settings.seed)},
   };
 }

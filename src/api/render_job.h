@@ -63,6 +63,11 @@ class RenderJob {
   // One of the four models for these options, framed by the glTF camera;
   // --focus auto asks the scene what the focus pixel sees.
   std::unique_ptr<Camera> makeCamera(const CameraOptions& options, Warnings& warnings) const;
+  // When the samples are taken (RenderSettings::timing): for a scene that
+  // moves during the span it was loaded for, from the options' shutter;
+  // none when nothing moves (a notice then when a rolling shutter or a
+  // shutter curve was asked for).
+  std::optional<ShutterTiming> shutterTiming(const CameraOptions& options, Warnings& warnings) const;
   // The colour of the scene's most powerful light (--white-balance auto).
   std::optional<Rgb> dominantLightColour() const { return lights_->dominantColour(); }
 

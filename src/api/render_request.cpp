@@ -37,6 +37,7 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   checkRawOutput(request.raw);
   RenderSettings settings = request.settings;
   settings.filmResponse = colour.response;
+  settings.timing = job.shutterTiming(request.camera, warnings);
   if (settings.samplesPerPixel < 1) throw UsageError("--spp", "expected at least 1 sample per pixel");
   const PixelRegion frameRegion = PixelRegion::wholeFrame(job.width(), job.height());
   const PixelRegion region = settings.region.value_or(frameRegion);

@@ -77,9 +77,36 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "normalized (an ideal lens records the scene radiance on axis at any f-number; default) or "
                  "physical (exposure H = E t, 1.0 = ISO 12232 saturation: value = 683 E t ISO / 78)")
       ->check(CLI::IsMember({"normalized", "physical"}));
-  cmd.add_option("--shutter", o.shutter,
-                 "shutter time in seconds for --exposure physical, e.g. 1/125 (default 1/100)")
+  cmd.add_option(
+         "--shutter", o.shutter,
+         "shutter time in seconds, e.g. 1/125 (default 1/100): the exposure under --exposure physical, "
+         "and the motion blur of an animated scene (0: an instant)")
       ->check(checkWith(parseShutter, "SECONDS"));
+  cmd.add_option(
+         "--shutter-curve", o.shutterCurve,
+         "how the shutter opens: box (at once; default) or trapezoid:F (a leaf shutter taking the share F "
+         "<= 0.5 of --shutter to open, and again to close), e.g. --shutter-curve trapezoid:0.2")
+      ->check(checkWith(
+          [](const std::string& v) {
+            CameraOptions c;
+            c.shutterCurve = v;
+            return shutterTiming(c);
+          },
+          "box|trapezoid:F"));
+  cmd.add_option("--rolling-shutter", o.rollingShutter,
+                 "a CMOS rolling shutter: each row starts its exposure later by READOUT x row / rows, e.g. "
+                 "--rolling-shutter 1/30 (default: a global shutter)")
+      ->check(checkWith(
+          [](const std::string& v) {
+            CameraOptions c;
+            c.rollingShutter = v;
+            return shutterTiming(c);
+          },
+          "SECONDS"));
+  cmd.add_option("--readout", o.readout,
+                 "the rolling shutter's direction in the image as seen: top-down (default), bottom-up, "
+                 "left-right or right-left")
+      ->check(CLI::IsMember({"top-down", "bottom-up", "left-right", "right-left"}));
   cmd.add_option("--iso", o.iso, "ISO speed for --exposure physical (default 100)")
       ->check(numberIn(1.0, 1e7, "ISO speed"));
   cmd.add_option(

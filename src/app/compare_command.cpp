@@ -128,7 +128,8 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     throw UsageError(args.camera.noise != "off" ? "--noise" : "--sensor-params",
                      "lensrt compare compares the models' noiseless images; lensrt render --noise on reads "
                      "one out through a sensor");
-  const SceneOptions sceneOptions = lensrt::sceneOptions(args.frame, args.quiet);
+  SceneOptions sceneOptions = lensrt::sceneOptions(args.frame, args.quiet);
+  sceneOptions.time.spanSeconds = recordedSpanSeconds(args.camera);
   RenderSettings settings;
   settings.samplesPerPixel = args.spp;
   settings.adaptive = adaptiveSampling(args.adaptive, args.spp);
@@ -147,6 +148,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   });
   const RenderJob job(sceneOptions, warnings);
   settings.filmResponse = filmColour(args.camera, job.dominantLightColour(), warnings).response;
+  settings.timing = job.shutterTiming(args.camera, warnings);
   const nlohmann::json lens = lensFigures(args.camera);
   // An --fstop wider than the lens opens would leave the full lens at its
   // widest and the ideal models wider: all four use the widest instead.

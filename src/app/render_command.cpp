@@ -63,6 +63,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   FileRender job;
   job.scene = sceneOptions(args.frame, args.quiet);
   job.camera = args.camera;
+  // A moving scene is posed over the time the frame records it.
+  job.scene.time.spanSeconds = recordedSpanSeconds(job.camera);
   RenderSettings& settings = job.settings;
   settings.samplesPerPixel = args.spp;
   settings.seed = args.seed;

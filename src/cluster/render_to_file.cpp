@@ -101,6 +101,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   const PixelRegion region = partOfFrame(args, job.width(), job.height());
   settings.region = region;
   const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
+  settings.timing = job.shutterTiming(args.camera, warnings);
   const FilmColour colour = filmColour(args.camera, job.dominantLightColour(), warnings);
   const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film(), colour.camera);
   settings.filmResponse = colour.response;

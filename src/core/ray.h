@@ -12,6 +12,9 @@ struct Ray {
   Vec3f direction;
   float tMin = 0.0f;
   float tMax = kInfinityF;
+  // When the ray travels, as a fraction of the span the scene was loaded
+  // for (its motion steps, MeshInstance::motion): 0 at the start.
+  float time = 0.0f;
 };
 
 }  // namespace lensrt

@@ -40,7 +40,9 @@ class Transform {
   Vec3f point(const Vec3f& p) const { return Vec3f(point(Vec3d(p))); }
   Vec3f vector(const Vec3f& v) const { return Vec3f(vector(Vec3d(v))); }
   Vec3f normal(const Vec3f& n) const { return Vec3f(normal(Vec3d(n))); }
-  Ray operator()(const Ray& r) const { return {point(r.origin), vector(r.direction), r.tMin, r.tMax}; }
+  Ray operator()(const Ray& r) const {
+    return {point(r.origin), vector(r.direction), r.tMin, r.tMax, r.time};
+  }
   Bounds3f operator()(const Bounds3f& b) const;
   // Determinant of the upper 3x3: negative when the transform mirrors (flips winding).
   double determinant3x3() const;

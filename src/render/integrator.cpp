@@ -167,7 +167,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
         const BsdfValue bv = bsdf.evalPdf(wo, ls->wi);
         const Spectrum f = bv.f * std::abs(dot(ls->wi, sp.frame.n));
         if (maxComponent(f) > 0) {
-          Ray shadow{originToward(ls->wi), ls->wi, 0.0f, kInfinityF};
+          Ray shadow{originToward(ls->wi), ls->wi, 0.0f, kInfinityF, ray.time};
           // A light at a point: aim from the offset origin at that point itself.
           const bool finite = std::isfinite(ls->distance);
           const Vec3f target = finite ? hit->position + ls->wi * ls->distance : Vec3f{};
@@ -200,7 +200,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
     beta *= bs->f * (std::abs(dot(wi, sp.frame.n)) / bs->pdf);
     prevBsdfPdf = bs->pdf;
     prevPosition = hit->position;
-    ray = Ray{originToward(wi), wi, 0.0f, kInfinityF};
+    ray = Ray{originToward(wi), wi, 0.0f, kInfinityF, ray.time};
     if (transmitted) {
       const Material& m = materials_.material(hit->material);
       if (!m.thinWalled()) sigma = sp.frontFace ? attenuationCoefficient(m, lambda) : Spectrum(0.0f);

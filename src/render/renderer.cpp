@@ -107,6 +107,14 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           }
         }
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
+        if (settings.timing) {
+          // The time shares the wavelength's Sobol pair (its second
+          // coordinate, unused otherwise), so the two are stratified together.
+          for (std::size_t k = 0; k < n; ++k)
+            if (rays[k])
+              rays[k]->ray.time = settings.timing->sampleTime(samples[k].film, film.width, film.height,
+                                                              samplers[k].get2D(kDimWavelength).y);
+        }
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;
           PixelAccumulator& acc = state.pixel(columns[j / spp], y);

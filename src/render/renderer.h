@@ -21,6 +21,7 @@
 #include "render/integrator.h"
 #include "render/pixel_region.h"
 #include "render/progress.h"
+#include "render/shutter_timing.h"
 #include "render/spectral_response.h"
 
 namespace lensrt {
@@ -37,6 +38,10 @@ struct RenderSettings {
   std::optional<PixelRegion> region;  // none: the whole frame
   // Spectral transport through this response; none: RGB transport.
   std::shared_ptr<const FilmResponse> filmResponse;
+  // When the samples are taken, for a scene that moves (motion blur, rolling
+  // shutter); none: every ray at time 0, with the bits of a render before
+  // motion existed.
+  std::optional<ShutterTiming> timing;
 };
 
 struct RenderOutput {

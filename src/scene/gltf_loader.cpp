@@ -26,6 +26,7 @@
 #include "scene/gltf_mesh.h"
 #include "scene/gltf_values.h"
 #include "scene/scene_file_access.h"
+#include "scene/scene_motion.h"
 #include "scene/selection_error.h"
 
 namespace lensrt {
@@ -433,6 +434,8 @@ class Traversal {
   }
 
   const gltf::MeshStats& stats() const { return stats_; }
+  // Every node's world transform, posed.
+  const std::map<int, Transform>& worlds() const { return worlds_; }
 
  private:
   void visit(int index, const tinygltf::Node& node, const Transform& world) {
@@ -648,6 +651,45 @@ void checkRenderable(const Context& ctx, const SceneDesc& desc, const gltf::Mesh
       ctx.fail("world-space coordinates beyond 1e15 (check the node transforms)");
 }
 
+// The scene's meshes, instances, lights and cameras posed at `time` (no
+// materials), and every node's world transform.
+std::pair<SceneDesc, std::map<int, Transform>> poseAt(const Context& ctx, const std::vector<int>& roots,
+                                                      const AnimationTime& time) {
+  SceneDesc desc;
+  const std::map<int, gltf::AnimatedTrs> animated = gltf::animatedNodes(ctx, time);
+  Traversal traversal(ctx, desc, animated);
+  traversal.run(roots);
+  return {std::move(desc), traversal.worlds()};
+}
+
+// Motion blur over time.spanSeconds: probe the animation at evenly spaced
+// moments for how many time steps it needs, then pose the scene at them.
+void addAnimationMotion(const Context& ctx, const std::vector<int>& roots, const AnimationTime& time,
+                        SceneDesc& desc) {
+  constexpr int kProbeIntervals = 8;
+  const auto at = [&](int step, int steps) {
+    AnimationTime t = time;
+    t.seconds = time.seconds + time.spanSeconds * double(step) / double(steps - 1);
+    t.spanSeconds = 0;
+    return t;
+  };
+  std::vector<std::map<int, Transform>> probeWorlds;
+  std::vector<SceneDesc> probes;
+  for (int k = 0; k <= kProbeIntervals; ++k) {
+    auto [pose, worlds] = poseAt(ctx, roots, at(k, kProbeIntervals + 1));
+    probeWorlds.push_back(std::move(worlds));
+    if (k > 0) probes.push_back(std::move(pose));
+  }
+  const int steps = motionStepCount(probeWorlds);
+  std::vector<SceneDesc> poses;
+  if (steps == kProbeIntervals + 1) {
+    poses = std::move(probes);
+  } else {
+    for (int k = 1; k < steps; ++k) poses.push_back(poseAt(ctx, roots, at(k, steps)).first);
+  }
+  addMotion(desc, poses, ctx.warnings);
+}
+
 }  // namespace
 
 SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
@@ -663,10 +705,13 @@ SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& 
   const std::map<int, gltf::AnimatedTrs> animated = gltf::animatedNodes(ctx, time);
   if (!model.animations.empty())
     desc.pose =
-        fmt::format("time={:g} animation={}", time.seconds, time.animation.empty() ? "all" : time.animation);
+        fmt::format("time={:g} animation={}{}", time.seconds, time.animation.empty() ? "all" : time.animation,
+                    time.spanSeconds > 0 ? fmt::format(" span={:g}", time.spanSeconds) : "");
+  const std::vector<int> roots = sceneRoots(ctx, sceneIndex);
   Traversal traversal(ctx, desc, animated);
-  traversal.run(sceneRoots(ctx, sceneIndex));
+  traversal.run(roots);
   checkRenderable(ctx, desc, traversal.stats());
+  if (time.spanSeconds > 0 && !model.animations.empty()) addAnimationMotion(ctx, roots, time, desc);
   return desc;
 }
 

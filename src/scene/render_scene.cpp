@@ -162,6 +162,9 @@ struct GeometryRecord {
   // them: the very floats hitAt would compute with the instance transform.
   // Null for an Embree instance (its vertices are in object space).
   const float* worldVertices = nullptr;
+  // A moving instance's world-space vertices at each time step (Embree's
+  // vertex buffers, in slot order); empty when still.
+  std::vector<const float*> stepVertices;
 };
 
 }  // namespace
@@ -195,9 +198,13 @@ struct RenderScene::Impl {
   void buildMasks();
   // `vertices` receives Embree's vertex buffer (world space when baked).
   EmbreeGeometry newTriangles(int meshIndex, const Transform* bake, const float** vertices);
+  // A moving instance, baked at each of its time steps (Embree interpolates
+  // linearly between them at the ray's time).
+  EmbreeGeometry newMovingTriangles(const MeshInstance& inst, std::vector<const float*>& stepVertices);
+  void finishTriangles(RTCGeometry geom, int meshIndex);
   void build();
-  SurfaceHit hitAt(const GeometryRecord& rec, unsigned prim, float u, float v, float t,
-                   const Vec3f& dir) const;
+  SurfaceHit hitAt(const GeometryRecord& rec, unsigned prim, float u, float v, float t, const Vec3f& dir,
+                   float time) const;
 };
 
 void RenderScene::Impl::validate() const {
@@ -229,9 +236,22 @@ void RenderScene::Impl::validate() const {
          {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.normalTexture, &mat.emissiveTexture})
       if (ref->texture >= static_cast<int>(desc.textures.size()))
         throw InputError(desc.sourceFile, "material '" + mat.name + "': texture index out of range");
-  for (const MeshInstance& inst : desc.instances)
+  for (const MeshInstance& inst : desc.instances) {
     if (inst.mesh < 0 || inst.mesh >= static_cast<int>(desc.meshes.size()))
       throw InputError(desc.sourceFile, "instance of mesh " + std::to_string(inst.mesh) + " out of range");
+    if (!inst.moves()) continue;
+    if (static_cast<int>(inst.motion.size()) != desc.motionSteps || desc.motionSteps < 2 ||
+        desc.motionSteps > 129)
+      throw InputError(desc.sourceFile, "a moving instance's time steps do not match the scene's");
+    const Mesh& still = desc.meshes[inst.mesh];
+    for (const MeshInstance::Step& step : inst.motion)
+      if (step.mesh < 0 || step.mesh >= static_cast<int>(desc.meshes.size()) ||
+          desc.meshes[step.mesh].positions.size() != still.positions.size() ||
+          desc.meshes[step.mesh].normals.size() != still.normals.size() ||
+          desc.meshes[step.mesh].tangents.size() != still.tangents.size() ||
+          desc.meshes[step.mesh].indices != still.indices)
+        throw InputError(desc.sourceFile, "a moving instance's time step has another mesh shape");
+  }
 }
 
 void RenderScene::Impl::buildMasks() {
@@ -261,19 +281,50 @@ EmbreeGeometry RenderScene::Impl::newTriangles(int meshIndex, const Transform* b
     vertices[3 * i + 1] = p.y;
     vertices[3 * i + 2] = p.z;
   }
+  finishTriangles(geom.get(), meshIndex);
+  return geom;
+}
+
+EmbreeGeometry RenderScene::Impl::newMovingTriangles(const MeshInstance& inst,
+                                                     std::vector<const float*>& stepVertices) {
+  EmbreeGeometry geom(rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE));
+  check("create a triangle geometry");
+  rtcSetGeometryTimeStepCount(geom.get(), static_cast<unsigned>(inst.motion.size()));
+  check("set the time steps of a moving mesh");
+  stepVertices.clear();
+  for (std::size_t k = 0; k < inst.motion.size(); ++k) {
+    const Mesh& m = desc.meshes[inst.motion[k].mesh];
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom.get(), RTC_BUFFER_TYPE_VERTEX,
+                                                                 static_cast<unsigned>(k), RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), m.positions.size()));
+    check("allocate a vertex buffer");
+    stepVertices.push_back(vertices);
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+      const Vec3f p = inst.motion[k].worldFromObject.point(m.positions[i]);
+      vertices[3 * i] = p.x;
+      vertices[3 * i + 1] = p.y;
+      vertices[3 * i + 2] = p.z;
+    }
+  }
+  finishTriangles(geom.get(), inst.mesh);
+  return geom;
+}
+
+// The index buffer, the alpha filter and the commit, for still and moving meshes alike.
+void RenderScene::Impl::finishTriangles(RTCGeometry geom, int meshIndex) {
+  const Mesh& m = desc.meshes[meshIndex];
   auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
-      geom.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), m.triangleCount()));
+      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), m.triangleCount()));
   check("allocate an index buffer");
   std::copy(m.indices.begin(), m.indices.end(), indices);
-  rtcSetGeometryBuildQuality(geom.get(), RTC_BUILD_QUALITY_HIGH);
+  rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
   if (masks[meshIndex].mesh) {
-    rtcSetGeometryUserData(geom.get(), &masks[meshIndex]);
-    rtcSetGeometryIntersectFilterFunction(geom.get(), alphaFilter);
-    rtcSetGeometryOccludedFilterFunction(geom.get(), alphaFilter);
+    rtcSetGeometryUserData(geom, &masks[meshIndex]);
+    rtcSetGeometryIntersectFilterFunction(geom, alphaFilter);
+    rtcSetGeometryOccludedFilterFunction(geom, alphaFilter);
   }
-  rtcCommitGeometry(geom.get());
+  rtcCommitGeometry(geom);
   check("commit a triangle geometry");
-  return geom;
 }
 
 void RenderScene::Impl::build() {
@@ -320,7 +371,12 @@ void RenderScene::Impl::build() {
   std::vector<int> uses(desc.meshes.size(), 0);
   for (std::size_t i = 0; i < desc.instances.size(); ++i) {
     const MeshInstance& inst = desc.instances[i];
-    if (desc.meshes[inst.mesh].triangleCount() == 0 || degenerate(inst.worldFromObject)) continue;
+    if (desc.meshes[inst.mesh].triangleCount() == 0) continue;
+    if (inst.moves()) {  // baked at each time step
+      placement[i] = Placement::Bake;
+      continue;
+    }
+    if (degenerate(inst.worldFromObject)) continue;
     placement[i] = instanceable(inst.worldFromObject, reach) ? Placement::Instance : Placement::Bake;
     if (placement[i] == Placement::Instance) ++uses[inst.mesh];
   }
@@ -348,7 +404,11 @@ void RenderScene::Impl::build() {
     if (placement[i] == Placement::Skip) continue;
     EmbreeGeometry geom;
     const float* worldVertices = nullptr;
-    if (placement[i] == Placement::Bake) {
+    std::vector<const float*> stepVertices;
+    if (inst.moves()) {
+      geom = newMovingTriangles(inst, stepVertices);
+      ++stats.bakedGeometries;
+    } else if (placement[i] == Placement::Bake) {
       geom = newTriangles(inst.mesh, &inst.worldFromObject, &worldVertices);
       ++stats.bakedGeometries;
     } else {
@@ -367,21 +427,41 @@ void RenderScene::Impl::build() {
     const auto id = static_cast<unsigned>(records.size());
     rtcAttachGeometryByID(top.get(), geom.get(), id);
     check("attach a geometry");
-    records.push_back(
-        {static_cast<int>(i), inst.mesh, inst.worldFromObject.determinant3x3() < 0.0, worldVertices});
+    records.push_back({static_cast<int>(i), inst.mesh, inst.worldFromObject.determinant3x3() < 0.0,
+                       worldVertices, std::move(stepVertices)});
   }
   rtcCommitScene(top.get());
   check("build the scene");
 }
 
 SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, float u, float v, float t,
-                                    const Vec3f& dir) const {
+                                    const Vec3f& dir, float time) const {
+  const MeshInstance& inst = desc.instances[rec.instance];
   const Mesh& m = desc.meshes[rec.mesh];
-  const Transform& xf = desc.instances[rec.instance].worldFromObject;
   const std::uint32_t* idx = &m.indices[3 * static_cast<std::size_t>(prim)];
   const float w = 1 - u - v;
   const auto interp3 = [&](const std::vector<Vec3f>& a) {
     return a[idx[0]] * w + a[idx[1]] * u + a[idx[2]] * v;
+  };
+  // A moving instance: the two time steps around the ray's time, and how
+  // far between them, as Embree interpolates (linearly in the vertices).
+  std::size_t step = 0;
+  float between = 0;
+  if (!rec.stepVertices.empty()) {
+    const float f = std::clamp(time, 0.0f, 1.0f) * float(rec.stepVertices.size() - 1);
+    step = std::min(static_cast<std::size_t>(f), rec.stepVertices.size() - 2);
+    between = f - float(step);
+  }
+  const Transform& xf = inst.worldFromObject;
+  // A vertex attribute's world vector at the hit, interpolated in time too.
+  const auto stepped = [&](const auto& attribute, const auto& toWorld) {
+    const Vec3f a = toWorld(inst.worldFromObject, attribute(m));
+    if (rec.stepVertices.empty()) return a;
+    const Vec3f a0 =
+        toWorld(inst.motion[step].worldFromObject, attribute(desc.meshes[inst.motion[step].mesh]));
+    const Vec3f a1 =
+        toWorld(inst.motion[step + 1].worldFromObject, attribute(desc.meshes[inst.motion[step + 1].mesh]));
+    return a0 * (1 - between) + a1 * between;
   };
 
   SurfaceHit hit;
@@ -390,6 +470,11 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   hit.instance = rec.instance;
   hit.material = m.material;
   const auto world = [&](std::uint32_t i) {
+    if (!rec.stepVertices.empty()) {
+      const float* p0 = rec.stepVertices[step] + 3 * static_cast<std::size_t>(i);
+      const float* p1 = rec.stepVertices[step + 1] + 3 * static_cast<std::size_t>(i);
+      return Vec3f{p0[0], p0[1], p0[2]} * (1 - between) + Vec3f{p1[0], p1[1], p1[2]} * between;
+    }
     if (!rec.worldVertices) return xf.point(m.positions[i]);
     const float* p = rec.worldVertices + 3 * static_cast<std::size_t>(i);
     return Vec3f{p[0], p[1], p[2]};
@@ -407,12 +492,19 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
 
   hit.shadingNormal = hit.geometricNormal;
   if (!m.normals.empty()) {
-    if (const auto n = unitVector(xf.normal(interp3(m.normals)))) hit.shadingNormal = *n;
+    const Vec3f n = stepped([&](const Mesh& mesh) { return interp3(mesh.normals); },
+                            [](const Transform& x, const Vec3f& a) { return x.normal(a); });
+    if (const auto unit = unitVector(n)) hit.shadingNormal = *unit;
     if (dot(hit.shadingNormal, hit.geometricNormal) < 0) hit.shadingNormal = -hit.shadingNormal;
   }
   if (!m.tangents.empty()) {
     const Vec4f& t0 = m.tangents[idx[0]];
-    const Vec3f tv = xf.vector(t0.xyz() * w + m.tangents[idx[1]].xyz() * u + m.tangents[idx[2]].xyz() * v);
+    const Vec3f tv = stepped(
+        [&](const Mesh& mesh) {
+          return mesh.tangents[idx[0]].xyz() * w + mesh.tangents[idx[1]].xyz() * u +
+                 mesh.tangents[idx[2]].xyz() * v;
+        },
+        [](const Transform& x, const Vec3f& a) { return x.vector(a); });
     if (const auto tn = unitVector(tv)) {
       // A mirror flips cross(normal, tangent), so the handedness flips with it.
       const float handedness = (t0.w < 0 ? -1.0f : 1.0f) * (rec.mirrored ? -1.0f : 1.0f);
@@ -452,6 +544,7 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
   rh.ray.tnear = ray.tMin;
   rh.ray.tfar = ray.tMax;
   rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.time = ray.time;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(impl_->top.get(), &context.embree, &rh);
@@ -460,8 +553,8 @@ std::optional<SurfaceHit> RenderScene::intersect(const Ray& ray) const {
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || !std::isfinite(rh.ray.tfar)) return std::nullopt;
   // Instanced hits name the top-level instance in instID; baked ones in geomID.
   const unsigned topId = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
-  SurfaceHit hit =
-      impl_->hitAt(impl_->records[topId], rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar, ray.direction);
+  SurfaceHit hit = impl_->hitAt(impl_->records[topId], rh.hit.primID, rh.hit.u, rh.hit.v, rh.ray.tfar,
+                                ray.direction, ray.time);
   if (!isFinite(hit.position)) return std::nullopt;
   return hit;
 }
@@ -480,6 +573,7 @@ bool RenderScene::occluded(const Ray& ray) const {
   r.tnear = ray.tMin;
   r.tfar = ray.tMax;
   r.mask = 0xFFFFFFFFu;
+  r.time = ray.time;
   rtcOccluded1(impl_->top.get(), &context.embree, &r);
   return r.tfar == -kInfinityF;  // Embree marks a blocked ray this way
 }

@@ -120,7 +120,17 @@ struct Mesh {
 // EXT_mesh_gpu_instancing) become Embree instances of one shared geometry.
 struct MeshInstance {
   int mesh = 0;
-  Transform worldFromObject;
+  Transform worldFromObject;  // at the shutter's opening
+  // Motion blur: the placement at evenly spaced moments over the recorded
+  // span (SceneDesc::motionSteps of them, the first being mesh and
+  // worldFromObject); a deforming mesh (skin, morph targets) gives each step
+  // a mesh of its own with the same triangles. Empty: the instance is still.
+  struct Step {
+    int mesh = 0;
+    Transform worldFromObject;
+  };
+  std::vector<Step> motion{};
+  bool moves() const { return !motion.empty(); }
 };
 
 // Radiometric punctual lights (converted from glTF's photometric units by the
@@ -161,6 +171,9 @@ struct SceneDesc {
   // The moment the nodes are posed at, "time=1.25 animation=all", when the
   // file has animations; empty when it has none (part of a render's identity).
   std::string pose;
+  // Time steps of the moving instances (their `motion`), spread evenly over
+  // the span the scene was loaded for; 0 when nothing moves.
+  int motionSteps = 0;
 
   Bounds3f worldBounds() const;
 };

@@ -33,7 +33,8 @@ TEST(CameraOptions, ParsesSensorsAndShutterTimes) {
   EXPECT_THROW(parseSensor("big"), UsageError);
   EXPECT_DOUBLE_EQ(parseShutter("1/250"), 0.004);
   EXPECT_DOUBLE_EQ(parseShutter("2"), 2.0);
-  EXPECT_THROW(parseShutter("0"), UsageError);
+  EXPECT_EQ(parseShutter("0"), 0.0);  // an instant (motion blur off)
+  EXPECT_THROW(parseShutter("-1/100"), UsageError);
   try {
     parseShutter("soon");
     FAIL();
