@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/cli_util.h"
+#include "core/constants.h"
 #include "image/image_io.h"
 
 namespace lensrt {
@@ -26,24 +27,33 @@ using nlohmann::json;
 constexpr int kSize = 200;               // pixels, square
 constexpr double kPixelsPerMetre = 100;  // orthographic xmag = ymag = 1 m over 100 px
 
-// An emissive rectangle (width x height metres, centred at its node) that a
-// LINEAR animation moves along +x at `speed` m/s from x = -1 at t = 0,
-// seen from +z by an orthographic camera over [-1, 1]^2.
-std::string movingRectangle(double width, double height, double speed) {
+// An emissive rectangle (width x height metres) seen from +z by an
+// orthographic camera over [-1, 1]^2, animated by one LINEAR channel of
+// node 0 (`path`: translation or rotation; `values` 3 or 4 per keyframe).
+// With a `radius` node 0 is a pivot at the origin and the rectangle sits
+// that far out along its x axis, so a rotation spins it in a circle.
+std::string animatedRectangle(double width, double height, const std::string& path,
+                              const std::vector<float>& times, const std::vector<float>& values,
+                              double radius = 0) {
   const float w = float(width / 2), h = float(height / 2);
   const float positions[] = {-w, -h, 0, w, -h, 0, w, h, 0, -w, h, 0};
   const unsigned short indices[] = {0, 1, 2, 0, 2, 3, 0, 0};
-  const float times[] = {0, 10};
-  const float translations[] = {-1, 0, 0, float(-1 + 10 * speed), 0, 0};
   std::string data(reinterpret_cast<const char*>(positions), sizeof positions);
   data.append(reinterpret_cast<const char*>(indices), sizeof indices);
-  data.append(reinterpret_cast<const char*>(times), sizeof times);
-  data.append(reinterpret_cast<const char*>(translations), sizeof translations);
+  const std::size_t timesAt = data.size();
+  data.append(reinterpret_cast<const char*>(times.data()), times.size() * sizeof(float));
+  const std::size_t valuesAt = data.size();
+  data.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+  const std::size_t components = values.size() / times.size();
+  const json camera = {{"camera", 0}, {"translation", {0, 0, 5}}};
+  const json nodes = radius > 0
+                         ? json{{{"children", {2}}}, camera, {{"mesh", 0}, {"translation", {radius, 0, 0}}}}
+                         : json{{{"mesh", 0}}, camera};
   json doc = {
       {"asset", {{"version", "2.0"}}},
       {"scene", 0},
       {"scenes", {{{"nodes", {0, 1}}}}},
-      {"nodes", {{{"mesh", 0}, {"translation", {-1, 0, 0}}}, {{"camera", 0}, {"translation", {0, 0, 5}}}}},
+      {"nodes", nodes},
       {"cameras",
        {{{"type", "orthographic"},
          {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 100}}}}}},
@@ -60,24 +70,44 @@ std::string movingRectangle(double width, double height, double speed) {
         {{"bufferView", 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}},
         {{"bufferView", 2},
          {"componentType", 5126},
-         {"count", 2},
+         {"count", times.size()},
          {"type", "SCALAR"},
-         {"min", {0}},
-         {"max", {10}}},
-        {{"bufferView", 3}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}}}},
+         {"min", {times.front()}},
+         {"max", {times.back()}}},
+        {{"bufferView", 3},
+         {"componentType", 5126},
+         {"count", times.size()},
+         {"type", components == 4 ? "VEC4" : "VEC3"}}}},
       {"bufferViews",
        {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
         {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 12}},
-        {{"buffer", 0}, {"byteOffset", 64}, {"byteLength", 8}},
-        {{"buffer", 0}, {"byteOffset", 72}, {"byteLength", 24}}}},
+        {{"buffer", 0}, {"byteOffset", timesAt}, {"byteLength", times.size() * sizeof(float)}},
+        {{"buffer", 0}, {"byteOffset", valuesAt}, {"byteLength", values.size() * sizeof(float)}}}},
       {"buffers",
        {{{"byteLength", data.size()}, {"uri", "data:application/octet-stream;base64," + cli::base64(data)}}}},
       {"animations",
-       {{{"name", "slide"},
-         {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}},
+       {{{"name", "move"},
+         {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", path}}}}}},
          {"samplers", {{{"input", 2}, {"output", 3}, {"interpolation", "LINEAR"}}}}}}},
   };
   return doc.dump();
+}
+
+// The rectangle moving along +x at `speed` m/s from x = -1 at t = 0.
+std::string movingRectangle(double width, double height, double speed) {
+  return animatedRectangle(width, height, "translation", {0, 10}, {-1, 0, 0, float(-1 + 10 * speed), 0, 0});
+}
+
+// The rectangle at `radius` turning about the z axis at 90 degrees a second
+// (keyframes a quarter turn apart: slerp takes the short way between them).
+std::string spinningRectangle(double size, double radius) {
+  std::vector<float> times, rotations;
+  for (int k = 0; k <= 4; ++k) {
+    const double half = 0.25 * kPi * k;  // half the angle, 90 degrees a keyframe
+    times.push_back(float(k));
+    rotations.insert(rotations.end(), {0, 0, float(std::sin(half)), float(std::cos(half))});
+  }
+  return animatedRectangle(size, size, "rotation", times, rotations, radius);
 }
 
 Image render(const TempDir& dir, const std::string& scene, const std::string& out,
@@ -209,6 +239,38 @@ TEST(MotionBlurCli, ARollingShutterSlantsAMovingBarByVTimesTheReadout) {
   const double expected = 1.0 * 0.3 * kPixelsPerMetre;
   EXPECT_NEAR(slant("top-down"), expected, 0.02 * expected);
   EXPECT_NEAR(slant("bottom-up"), -expected, 0.02 * expected);
+}
+
+// A square 0.8 m from the axis, spinning 90 degrees during the shutter
+// (45 to 135 degrees): its blur is a circular arc, whose middle (at 90
+// degrees, the top of the frame's centre column) stays 80 px above the
+// centre. Linear steps are chords: two time steps would put the middle at
+// 0.8 cos 45 = 0.57 m (57 px), ten (9 degrees each) within 0.1 px. Shown
+// to fail (56.6 px) with steps of 90 degrees and no check for curved paths.
+TEST(MotionBlurCli, ASpinningSquareBlursIntoACircularArc) {
+  const TempDir dir;
+  cli::writeFile(dir / "spin.gltf", spinningRectangle(0.04, 0.8));
+  const Image blur = render(dir, "spin.gltf", "spin.exr", {"--time", "0.5", "--shutter", "1"});
+  // The centroid of the columns 98-101 along y, and of the arc's row at 45 degrees.
+  double mass = 0, moment = 0;
+  for (int y = 0; y < kSize / 2; ++y)
+    for (int x = 98; x < 102; ++x) {
+      mass += blur.at(x, y, 0);
+      moment += blur.at(x, y, 0) * (y + 0.5);
+    }
+  ASSERT_GT(mass, 0);
+  EXPECT_NEAR(kSize / 2 - moment / mass, 0.8 * kPixelsPerMetre, 1.0);
+  // Along the diagonal at 112.5 degrees (between the middle and the end) too.
+  const double a = 112.5 * kPi / 180;
+  double along = 0, weight = 0;
+  for (double r = 0.5; r < 1.0; r += 0.0025) {
+    const int x = int(std::floor(kSize / 2 + r * std::cos(a) * kPixelsPerMetre));
+    const int y = int(std::floor(kSize / 2 - r * std::sin(a) * kPixelsPerMetre));
+    along += blur.at(x, y, 0) * r;
+    weight += blur.at(x, y, 0);
+  }
+  ASSERT_GT(weight, 0);
+  EXPECT_NEAR(along / weight * kPixelsPerMetre, 0.8 * kPixelsPerMetre, 1.0);
 }
 
 // A shutter of a microsecond is the still frame at its opening within noise
