@@ -160,6 +160,44 @@ TEST(FlareLight, APlateSplitsTheLightAsItsIncoherentSums) {
   EXPECT_EQ(absorbed, 0.0);
 }
 
+// The barrel: a ray outside the front element's clear aperture meets its
+// mount and comes back toward the scene with probability K, its directions
+// Lambertian about the axis (the mean cosine 2/3, the mean squared cosine
+// 1/2). Measured with K = 0.3 over 200 000 rays: 0.3002 back, mean cosine
+// 0.6663, mean squared 0.4993. Injected: directions uniform over the
+// hemisphere give 0.4993 and 0.3322.
+TEST(FlareLight, TheBarrelScattersItsReflectanceDiffusely) {
+  LensPrescription flat;
+  flat.name = "window";
+  Surface front, back, stop;
+  front.radius = 1e7, front.thickness = 5, front.apertureDiameter = 10, front.medium.nd = 1.5;
+  back.radius = -1e7, back.thickness = 1, back.apertureDiameter = 10;
+  stop.isStop = true, stop.apertureDiameter = 10, stop.thickness = 10;
+  flat.surfaces = {front, back, stop};
+  const LensSystem lens(flat, Coating::None);
+  const double k = 0.3;
+  const int rays = 200000;
+  SplitMix random{31};
+  double back_ = 0, cosine = 0, cosine2 = 0;
+  for (int i = 0; i < rays; ++i) {
+    // Entering 6 to 7 mm off axis: outside the 5 mm clear aperture.
+    const double r = 6 + random(), phi = 2 * kPi * random();
+    const auto t = lens.traceFromSceneWithFlare({{r * std::cos(phi), r * std::sin(phi), -10}, {0, 0, 1}},
+                                                {2, k, {}}, random);
+    if (t.end != End::Scene) continue;
+    EXPECT_TRUE(t.reflections == 1 && t.bounces[0].barrel && t.bounces[0].surface == 0);
+    back_ += t.ray.transmittance;
+    cosine += -t.ray.direction.z;
+    cosine2 += t.ray.direction.z * t.ray.direction.z;
+  }
+  std::printf("barrel: %.4f back, mean cosine %.4f, mean squared %.4f\n", back_ / rays, cosine / back_,
+              cosine2 / back_);
+  EXPECT_NEAR(back_ / rays, k, 4 * std::sqrt(k * (1 - k) / rays));
+  const double n = back_;  // about 60 000 rays; the cosine's variance is E[c^2] - E[c]^2 = 1/18
+  EXPECT_NEAR(cosine / n, 2.0 / 3.0, 4 * std::sqrt(1.0 / 18 / n));
+  EXPECT_NEAR(cosine2 / n, 0.5, 4 * std::sqrt(1.0 / 12 / n));  // E[c^4] - E[c^2]^2 = 1/3 - 1/4
+}
+
 // The film of a lens focused at infinity, and a histogram of what lands on
 // it per path: the direct image (no reflection) and each two-reflection
 // ghost (first, second), by the surfaces the trace records.
