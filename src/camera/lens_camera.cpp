@@ -36,7 +36,7 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
   filmZ_ = lens_->rearZ() + focusFilmDistance(*lens_, params.focusMetres * 1000.0);
   bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, sensorHalfDiagonalMm(film) * (1.0 + 1e-6),
                                               params.pupilIntervals);
-  scale_ = exposureScale(exposure, fNumber_);
+  scale_ = lensrt::exposureScale(exposure, fNumber_);
   if (params.flareReflections) {
     flareOptions_.maxReflections = *params.flareReflections;
     flareOptions_.barrelReflectance = params.barrelReflectance;
