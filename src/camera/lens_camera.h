@@ -65,6 +65,7 @@ class LensCamera final : public Camera {
   // With flare: how the stray-light traces run (the reflection limit, the
   // barrel, the stop's blades or mask), for the light pass and for tests.
   const LensSystem::FlareOptions& flareOptions() const { return flareOptions_; }
+  bool flare() const { return params_.flareReflections.has_value(); }
   // What a pixel records per unit of film irradiance (the exposure scale):
   // a camera ray's weight is this times the irradiance integrand over its pdf.
   double exposureScale() const { return scale_; }

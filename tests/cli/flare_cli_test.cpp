@@ -9,6 +9,7 @@
 //   (R 0.5% a surface against bare glass's 4-6%; measured +5.6% and +0.015%).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <numeric>
 
@@ -129,6 +130,53 @@ TEST(FlareCli, FlareIsTheSameBitsOnAnyThreadsAndTiles) {
   const Image one = readImage(dir / "t1.exr");
   EXPECT_EQ(one.pixels, readImage(dir / "t2.exr").pixels);
   EXPECT_EQ(one.pixels, readImage(dir / "m.exr").pixels);
+}
+
+// A lamp in frame (scenes/point_light_plane: a 1 W/sr point light 1 m below
+// the camera, above a plane): camera paths never see a punctual light, so
+// without the light pass the lamp is invisible; with --flare on its image
+// through the lens (and its ghosts) is added, from the light pass. The
+// brightest pixel is then the lamp's, at the centre, and the pass keeps the
+// bits across threads, tiles merged and a resumed checkpoint.
+TEST(FlareCli, ALampInFrameShowsAsTheLenssImageOfAPoint) {
+  const TempDir dir;
+  const std::string scene = std::string(LENSRT_SOURCE_DIR) + "/scenes/point_light_plane.gltf";
+  const auto render = [&](const std::string& name, const std::vector<std::string>& extra,
+                          const std::string& spp = "4") {
+    std::vector<std::string> a{"render", scene, "-q", "-o", (dir / name).string(), "--spp", spp};
+    for (const char* arg : {"--camera", "lens", "--lens", "dgauss-50mm", "--fstop", "4", "--focus", "1",
+                            "--spectral", "off", "--coatings", "none", "--res", "48x48"})
+      a.emplace_back(arg);
+    a.insert(a.end(), extra.begin(), extra.end());
+    const RunResult r = runLensrt(a);
+    ASSERT_EQ(r.status, 0) << r.err;
+  };
+  render("off.exr", {});
+  render("on.exr", {"--flare", "on", "--threads", "1"});
+  const Image off = readImage(dir / "off.exr"), on = readImage(dir / "on.exr");
+  const int red = on.channelIndex("R");
+  double brightest = 0, offBrightest = 0;
+  int bx = -1, by = -1;
+  for (int y = 0; y < on.height; ++y)
+    for (int x = 0; x < on.width; ++x) {
+      if (on.at(x, y, red) > brightest) brightest = on.at(x, y, red), bx = x, by = y;
+      offBrightest = std::max(offBrightest, double(off.at(x, y, red)));
+    }
+  std::printf("lamp: brightest %.4g at (%d, %d); without flare %.4g\n", brightest, bx, by, offBrightest);
+  EXPECT_GT(brightest, 100 * offBrightest);
+  EXPECT_TRUE((bx == 23 || bx == 24) && (by == 23 || by == 24)) << bx << "," << by;
+  render("t2.exr", {"--flare", "on", "--threads", "2"});
+  render("p0.exr", {"--flare", "on", "--tile", "0/2"});
+  render("p1.exr", {"--flare", "on", "--tile", "1/2"});
+  const RunResult m = runLensrt(
+      {"merge", (dir / "p0.exr").string(), (dir / "p1.exr").string(), "-o", (dir / "m.exr").string()});
+  ASSERT_EQ(m.status, 0) << m.err;
+  EXPECT_EQ(on.pixels, readImage(dir / "t2.exr").pixels);
+  EXPECT_EQ(on.pixels, readImage(dir / "m.exr").pixels);
+  // A checkpoint at 2 spp resumed to 4: the uninterrupted render's bits.
+  render("ck.exr", {"--flare", "on", "--checkpoint", "1000"}, "2");
+  render("ck.exr", {"--flare", "on", "--resume", (dir / "ck.exr").string(), "--checkpoint", "1000"});
+  EXPECT_EQ(on.pixels, readImage(dir / "ck.exr").pixels);
 }
 
 TEST(FlareCli, FlareNeedsTheFullLensAndAnEvenNumberOfBounces) {
