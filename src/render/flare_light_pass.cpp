@@ -92,7 +92,10 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   const bool spectral = camera.tracesWavelengths();
   const std::uint64_t chunks = (paths + kFlareChunk - 1) / kFlareChunk;
   std::vector<Vec3d> sums(image.pixels.size(), Vec3d{});
-  std::vector<std::vector<Deposit>> deposits(static_cast<std::size_t>(chunks));
+  // Chunks run kGroup at a time, so the deposits held at once stay bounded
+  // (kGroup x kFlareChunk paths) however many paths a light takes.
+  constexpr std::uint64_t kGroup = 64;
+  std::vector<std::vector<Deposit>> deposits(static_cast<std::size_t>(std::min(chunks, kGroup)));
   const int arenaThreads = threads > 0 ? threads : tbb::task_arena::automatic;
   tbb::task_arena arena(arenaThreads);
   for (std::size_t li = 0; li < lights.size(); ++li) {
@@ -103,7 +106,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
     const double share = camera.exposureScale() * discArea / double(paths) / pixelArea;
     const auto runChunk = [&](std::uint64_t c) {
       ChunkStream random(seed, li, c);
-      std::vector<Deposit>& out = deposits[std::size_t(c)];
+      std::vector<Deposit>& out = deposits[std::size_t(c % kGroup)];
       out.clear();
       const std::uint64_t end = std::min(paths, (c + 1) * kFlareChunk);
       for (std::uint64_t k = c * kFlareChunk; k < end; ++k) {
@@ -141,14 +144,17 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         out.push_back({pixel, Vec3d(light->intensity * channels) * w});
       }
     };
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, chunks, 1), [&](const auto& r) {
-        for (std::uint64_t c = r.begin(); c != r.end(); ++c) runChunk(c);
+    for (std::uint64_t group = 0; group < chunks; group += kGroup) {
+      const std::uint64_t end = std::min(chunks, group + kGroup);
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::uint64_t>(group, end, 1), [&](const auto& r) {
+          for (std::uint64_t c = r.begin(); c != r.end(); ++c) runChunk(c);
+        });
       });
-    });
-    // In chunk order, whatever ran where.
-    for (const std::vector<Deposit>& chunk : deposits)
-      for (const Deposit& d : chunk) sums[d.pixel] += d.value;
+      // In chunk order, whatever ran where.
+      for (std::uint64_t c = group; c < end; ++c)
+        for (const Deposit& d : deposits[std::size_t(c % kGroup)]) sums[d.pixel] += d.value;
+    }
   }
   for (std::size_t i = 0; i < sums.size(); ++i) image.pixels[i] = Rgb(sums[i]);
   return image;

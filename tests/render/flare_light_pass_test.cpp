@@ -87,12 +87,12 @@ TEST(FlareLightPass, TheDirectImageCarriesTheFluxThroughTheEntrancePupil) {
 TEST(FlareLightPass, GhostsAddLightAndTheBitsDoNotDependOnThreads) {
   const LensCamera direct = flareCamera(0), ghosts = flareCamera(2);
   const PunctualLight light = pointLight({1.0f, 0.5f, -20.0f});
-  const FlareImage one = flareLightPass(ghosts, std::span(&light, 1), 100000, 3, 1);
-  const FlareImage two = flareLightPass(ghosts, std::span(&light, 1), 100000, 3, 2);
+  const FlareImage one = flareLightPass(ghosts, std::span(&light, 1), 300000, 3, 1);
+  const FlareImage two = flareLightPass(ghosts, std::span(&light, 1), 300000, 3, 2);
   ASSERT_EQ(one.pixels.size(), two.pixels.size());
   EXPECT_EQ(0, std::memcmp(one.pixels.data(), two.pixels.data(), one.pixels.size() * sizeof(Rgb)));
   const double withGhosts = totals(ghosts, one).flux;
-  const double without = totals(direct, flareLightPass(direct, std::span(&light, 1), 100000, 3, 1)).flux;
+  const double without = totals(direct, flareLightPass(direct, std::span(&light, 1), 300000, 3, 1)).flux;
   std::printf("with ghosts %.5g, direct alone %.5g\n", withGhosts, without);
   EXPECT_GT(withGhosts, without);
 }
