@@ -13,6 +13,7 @@
 #include "core/constants.h"
 #include "render/lights.h"
 #include "render/spectral_response.h"
+#include "render/wavelengths.h"
 
 namespace lensrt {
 
@@ -79,7 +80,8 @@ struct Deposit {
 }  // namespace
 
 FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLight> lights,
-                          std::uint64_t paths, std::uint64_t seed, int threads) {
+                          std::uint64_t paths, std::uint64_t seed, const FilmResponse* response,
+                          int threads) {
   const FilmGeometry& film = camera.film();
   FlareImage image{film.width, film.height, std::vector<Rgb>(std::size_t(film.width) * film.height, Rgb{})};
   if (paths == 0 || lights.empty()) return image;
@@ -89,7 +91,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   const double discRadius = 1.2 * lens.frontApertureRadius();
   const double discArea = kPi * discRadius * discRadius;  // mm^2
   const double pixelArea = (film.sensorWidthMm / film.width) * (film.sensorHeightMm / film.height);
-  const bool spectral = camera.tracesWavelengths();
+  const bool dispersive = camera.tracesWavelengths();
   const std::uint64_t chunks = (paths + kFlareChunk - 1) / kFlareChunk;
   std::vector<Vec3d> sums(image.pixels.size(), Vec3d{});
   // Chunks run kGroup at a time, so the deposits held at once stay bounded
@@ -124,12 +126,23 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
           irradiance = (d.z / std::sqrt(r2)) / (r2 * 1e-6);  // cos / r^2, r in metres
         }
         double wavelength = kWavelengthDNm;
-        Rgb channels{1, 1, 1};
-        const double uWavelength = random();
-        if (spectral) {
-          const WavelengthSample ws = sampleWavelength(float(uWavelength));
+        // The light's colour on the film as the renderer takes a camera
+        // sample's: spectral transport through the film's response (the
+        // lens at the hero wavelength when it disperses), or RGB with one
+        // wavelength weighted into the channels when the lens disperses.
+        Rgb colour = light->intensity;
+        const float uWavelength = float(random());
+        if (response) {
+          SampledWavelengths lambdas = SampledWavelengths::sample(uWavelength, *response);
+          if (dispersive) {
+            wavelength = lambdas.hero();
+            lambdas.terminateSecondary();
+          }
+          colour = lambdas.toFilm(lambdas.illuminant(light->intensity));
+        } else if (dispersive) {
+          const WavelengthSample ws = sampleWavelength(uWavelength);
           wavelength = ws.wavelengthNm;
-          channels = ws.weight;
+          colour = colour * ws.weight;
         }
         const LensSystem::FlareTrace t = lens.traceFromSceneWithFlare(ray, options, random, wavelength);
         if (t.end != LensSystem::FlareTrace::End::Film) continue;
@@ -141,7 +154,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
           continue;
         const auto pixel = std::uint32_t(int(raster.y) * film.width + int(raster.x));
         const double w = share * irradiance * t.ray.transmittance;
-        out.push_back({pixel, Vec3d(light->intensity * channels) * w});
+        out.push_back({pixel, Vec3d(colour) * w});
       }
     };
     for (std::uint64_t group = 0; group < chunks; group += kGroup) {

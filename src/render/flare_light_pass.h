@@ -30,6 +30,8 @@
 
 namespace lensrt {
 
+class FilmResponse;
+
 inline constexpr std::uint64_t kFlareChunk = 4096;
 
 struct FlareImage {
@@ -40,8 +42,11 @@ struct FlareImage {
 
 // `lights` in world space; a light behind the front vertex or pointing away
 // (a spot's cone) adds nothing. The camera must have flare on
-// (LensCameraParams::flareReflections). `threads` 0: all cores.
+// (LensCameraParams::flareReflections). `response`: spectral transport's
+// film (RenderSettings::filmResponse), each path at its own wavelengths as a
+// camera sample's; none: RGB. `threads` 0: all cores.
 FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLight> lights,
-                          std::uint64_t paths, std::uint64_t seed, int threads = 0);
+                          std::uint64_t paths, std::uint64_t seed, const FilmResponse* response = nullptr,
+                          int threads = 0);
 
 }  // namespace lensrt

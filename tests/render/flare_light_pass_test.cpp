@@ -7,6 +7,8 @@
 //   exposure scale: within 3% (dgauss-50mm f/4 uncoated, 20 m: measured
 //   0.18482 for 0.18361, 1.0066; taking the disc's area without its 20%
 //   margin gives 0.699);
+// - under spectral transport (the CIE observer) white light gives the same in
+//   every channel;
 // - on axis it is centred within 0.5 px, and ghosts only add;
 // - the same bits on 1 and 2 threads.
 #include "render/flare_light_pass.h"
@@ -19,6 +21,7 @@
 
 #include "core/warnings.h"
 #include "optics/lens_readers.h"
+#include "render/film_response.h"
 
 namespace lensrt {
 namespace {
@@ -46,14 +49,14 @@ PunctualLight pointLight(const Vec3f& position) {
 struct Totals {
   double flux = 0, cx = 0, cy = 0;  // sum of red x pixel area / scale; its centroid (pixels)
 };
-Totals totals(const LensCamera& camera, const FlareImage& image) {
+Totals totals(const LensCamera& camera, const FlareImage& image, int channel = 0) {
   const FilmGeometry& f = camera.film();
   const double area = (f.sensorWidthMm / f.width) * (f.sensorHeightMm / f.height);
   Totals t;
   double w = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      const double v = image.at(x, y).x;
+      const double v = image.at(x, y)[std::size_t(channel)];
       w += v, t.cx += v * (x + 0.5), t.cy += v * (y + 0.5);
     }
   t.flux = w * area / camera.exposureScale();
@@ -82,17 +85,28 @@ TEST(FlareLightPass, TheDirectImageCarriesTheFluxThroughTheEntrancePupil) {
   EXPECT_NEAR(t.flux / expected, 1.0, 0.03);
   EXPECT_NEAR(t.cx, 160.0, 0.5);
   EXPECT_NEAR(t.cy, 120.0, 0.5);
+  // Spectral transport: RGB (1, 1, 1) light is D65, which the CIE observer
+  // records as (1, 1, 1): the same flux in every channel, within the noise
+  // of the paths' wavelengths.
+  const FlareImage spectral =
+      flareLightPass(camera, std::span(&light, 1), 400000, 7, &FilmResponse::cie1931Srgb());
+  for (int c = 0; c < 3; ++c) {
+    const double f = totals(camera, spectral, c).flux;
+    std::printf("spectral, channel %d: %.5g\n", c, f);
+    EXPECT_NEAR(f / expected, 1.0, 0.03) << "channel " << c;
+  }
 }
 
 TEST(FlareLightPass, GhostsAddLightAndTheBitsDoNotDependOnThreads) {
   const LensCamera direct = flareCamera(0), ghosts = flareCamera(2);
   const PunctualLight light = pointLight({1.0f, 0.5f, -20.0f});
-  const FlareImage one = flareLightPass(ghosts, std::span(&light, 1), 300000, 3, 1);
-  const FlareImage two = flareLightPass(ghosts, std::span(&light, 1), 300000, 3, 2);
+  const FlareImage one = flareLightPass(ghosts, std::span(&light, 1), 300000, 3, nullptr, 1);
+  const FlareImage two = flareLightPass(ghosts, std::span(&light, 1), 300000, 3, nullptr, 2);
   ASSERT_EQ(one.pixels.size(), two.pixels.size());
   EXPECT_EQ(0, std::memcmp(one.pixels.data(), two.pixels.data(), one.pixels.size() * sizeof(Rgb)));
   const double withGhosts = totals(ghosts, one).flux;
-  const double without = totals(direct, flareLightPass(direct, std::span(&light, 1), 300000, 3, 1)).flux;
+  const double without =
+      totals(direct, flareLightPass(direct, std::span(&light, 1), 300000, 3, nullptr, 1)).flux;
   std::printf("with ghosts %.5g, direct alone %.5g\n", withGhosts, without);
   EXPECT_GT(withGhosts, without);
 }
