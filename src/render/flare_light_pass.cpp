@@ -117,7 +117,8 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         LensRay ray;
         double irradiance = 0.0;  // across the disc's plane at the target, per unit intensity
         if (light->atInfinity) {
-          ray = {target - light->direction * (50.0 / light->direction.z), light->direction};
+          // Started in front of the lens: a front surface bulges at most its radius.
+          ray = {target - light->direction * ((discRadius + 10.0) / light->direction.z), light->direction};
           irradiance = light->direction.z;
         } else {
           const Vec3d d = target - light->point;

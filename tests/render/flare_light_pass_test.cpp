@@ -97,6 +97,29 @@ TEST(FlareLightPass, TheDirectImageCarriesTheFluxThroughTheEntrancePupil) {
   }
 }
 
+// A directional light (a sun) straight down the axis: its irradiance times
+// the same pupil and transmittance, centred.
+TEST(FlareLightPass, TheSunsImageCarriesItsIrradianceThroughTheEntrancePupil) {
+  const LensCamera camera = flareCamera(0);
+  PunctualLight sun;
+  sun.type = PunctualLight::Type::Directional;
+  sun.direction = {0, 0, 1};  // travelling toward the camera, which looks down -z
+  sun.intensity = {2, 2, 2};
+  const FlareImage image = flareLightPass(camera, std::span(&sun, 1), 400000, 9);
+  const Totals t = totals(camera, image);
+  const ParaxialData& p = camera.lens().paraxial();
+  double transmittance = 1, before = 1;
+  for (const Surface& s : camera.lens().prescription().surfaces) {
+    transmittance *= 1 - std::pow((s.medium.nd - before) / (s.medium.nd + before), 2);
+    before = s.medium.nd;
+  }
+  const double expected = 2.0 * kPi * std::pow(p.efl / (2 * p.fNumber), 2) * transmittance;
+  std::printf("sun: %.5g for %.5g, centroid (%.3f, %.3f)\n", t.flux, expected, t.cx, t.cy);
+  EXPECT_NEAR(t.flux / expected, 1.0, 0.03);
+  EXPECT_NEAR(t.cx, 160.0, 0.5);
+  EXPECT_NEAR(t.cy, 120.0, 0.5);
+}
+
 TEST(FlareLightPass, GhostsAddLightAndTheBitsDoNotDependOnThreads) {
   const LensCamera direct = flareCamera(0), ghosts = flareCamera(2);
   const PunctualLight light = pointLight({1.0f, 0.5f, -20.0f});
