@@ -369,7 +369,8 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, bool fromFilm,
         bounce(i, false);
       } else {
         if (result.reflections >= options.maxReflections) {
-          // Total internal reflection beyond the reflections allowed: all of it.
+          // Made to refract: the reflected part R is dropped (all of it
+          // under total internal reflection).
           result.truncated += weight * r;
           weight *= 1.0 - r;
         }
