@@ -124,6 +124,7 @@ class Scene:
         coatings: str | None = None,
         flare: str | bool = "off",
         flare_bounces: int = 2,
+        barrel_reflectance: float = 0,
         film: str | None = None,
         spectral: str | bool = "on",
         sensor_response: _Path | None = None,

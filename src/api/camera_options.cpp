@@ -210,8 +210,11 @@ void checkCameraOptions(const CameraOptions& o) {
         fmt::format("expected 0, 2 or 4 reflections (a ghost takes two), got {}", o.flareBounces));
   if (o.flare == "on" && o.model != "lens")
     throw UsageError("--flare", "stray light comes from the full lens's surfaces: it needs --camera lens");
-  if (o.flare == "on" && (o.blades != 0 || !o.apertureMask.empty()))
-    throw UsageError("--flare", "does not take --blades or --aperture-mask yet (the round stop only)");
+  if (!(o.barrelReflectance >= 0.0 && o.barrelReflectance < 1.0))
+    throw UsageError("--barrel-reflectance",
+                     fmt::format("expected a reflectance in [0, 1), got {:g}", o.barrelReflectance));
+  if (o.barrelReflectance > 0.0 && o.flare != "on")
+    throw UsageError("--barrel-reflectance", "the barrel's stray light needs --flare on");
   if (!o.film.empty()) oneOf("--film", o.film, {"radiance", "irradiance"});
   oneOf("--spectral", o.spectral, {"on", "off"});
   checkColourOptions(o);
@@ -399,6 +402,7 @@ std::unique_ptr<Camera> buildCamera(const CameraOptions& o, const CameraDesc& gl
   p.coatings = parseCoating(o.coatings);
   if (o.flare == "on") {
     p.flareReflections = o.flareBounces;
+    p.barrelReflectance = o.barrelReflectance;
     // Stray light needs reflecting surfaces: bare glass unless --coatings says otherwise.
     if (!p.coatings) p.coatings = Coating::None;
   }

@@ -51,10 +51,11 @@ struct CameraOptions {
   std::string rollingShutter;
   std::string readout = "top-down";
   std::optional<double> iso;
-  std::string dispersion = "on";  // the full lens traces each sample at its wavelength
-  std::string coatings;           // --coatings none|single|multi for the full lens; empty: lossless glass
-  std::string flare = "off";      // --flare on: stray light in the full lens (its surfaces reflect)
-  int flareBounces = 2;           // --flare-bounces: the most reflections a path takes (0, 2 or 4)
+  std::string dispersion = "on";   // the full lens traces each sample at its wavelength
+  std::string coatings;            // --coatings none|single|multi for the full lens; empty: lossless glass
+  std::string flare = "off";       // --flare on: stray light in the full lens (its surfaces reflect)
+  int flareBounces = 2;            // --flare-bounces: the most reflections a path takes (0, 2 or 4)
+  double barrelReflectance = 0.0;  // --barrel-reflectance: the barrel's diffuse reflectance, in [0, 1)
   // "radiance", "irradiance", or empty for the model's default: radiance for
   // the pinhole, irradiance for thin, thick and lens (which refuse radiance).
   std::string film;

@@ -9,10 +9,12 @@
 #include <stdexcept>
 
 #include "api/film_colour.h"
+#include "camera/lens_camera.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "image/spp_channel.h"
+#include "render/flare_light_pass.h"
 #include "render/light_level.h"
 #include "render/progress.h"
 #include "render/render_identity.h"
@@ -202,7 +204,9 @@ RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& se
     Progress progress(
         std::uint64_t(film.width) * std::uint64_t(film.height) * std::uint64_t(settings.samplesPerPixel),
         Progress::styleFor(stderr, quiet));
-    result.output = renderImage(camera, *integrator_, settings, &progress);
+    RenderSettings withFlare = settings;
+    if (!withFlare.flareLight) withFlare.flareLight = flareLight(camera, settings);
+    result.output = renderImage(camera, *integrator_, withFlare, &progress);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -219,9 +223,42 @@ RenderJobResult RenderJob::renderPasses(const Camera& camera, const RenderSettin
                       Progress::styleFor(stderr, quiet));
     finished = lensrt::renderPasses(camera, *integrator_, settings, state, &control, &progress);
   }
-  result.output = renderOutput(camera, state);
+  const std::shared_ptr<const FlareImage> flare =
+      settings.flareLight ? settings.flareLight : flareLight(camera, settings);
+  result.output = renderOutput(camera, state, flare.get());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+std::shared_ptr<const FlareImage> RenderJob::flareLight(const Camera& camera,
+                                                        const RenderSettings& settings) const {
+  const auto* lens = dynamic_cast<const LensCamera*>(&camera);
+  if (!lens || !lens->flare()) return nullptr;
+  // The lights the lens sees: a shadow ray from the entrance pupil (the
+  // camera's origin) to each.
+  const Vec3f eye = camera.worldFromCamera().point(Vec3f{0, 0, 0});
+  std::vector<PunctualLight> seen;
+  for (const PunctualLight& l : scene_->geometry().desc().lights) {
+    Ray ray;
+    ray.origin = eye;
+    if (l.type == PunctualLight::Type::Directional) {
+      ray.direction = -l.direction;
+    } else {
+      const Vec3f d = l.position - eye;
+      const float distance = length(d);
+      if (!(distance > 0.0f)) continue;
+      ray.direction = d / distance;
+      ray.tMax = distance * (1.0f - 1e-4f);
+    }
+    if (!scene_->geometry().occluded(ray)) seen.push_back(l);
+  }
+  if (seen.empty()) return nullptr;
+  const FilmGeometry& film = camera.film();
+  const std::uint64_t paths =
+      std::max<std::uint64_t>(65536, std::uint64_t(std::max(1, settings.samplesPerPixel)) *
+                                         std::uint64_t(film.width) * std::uint64_t(film.height) / 4);
+  return std::make_shared<const FlareImage>(
+      flareLightPass(*lens, seen, paths, settings.seed, settings.filmResponse.get(), settings.threads));
 }
 
 ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {

@@ -74,6 +74,12 @@ class RenderJob {
   // Renders with a progress bar on stderr unless `quiet`.
   RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
 
+  // --flare on with the full lens: the light pass of the scene's punctual
+  // lights (render/flare_light_pass.h) for these settings, each light the
+  // scene hides from the lens's entrance pupil left out; none otherwise.
+  // spp x pixels / 4 paths a light (at least 65 536), from the render's seed.
+  std::shared_ptr<const FlareImage> flareLight(const Camera& camera, const RenderSettings& settings) const;
+
   // Continues `state` to settings.samplesPerPixel in passes steered by
   // `control` (see renderPasses); `finished` says whether it got there.
   RenderJobResult renderPasses(const Camera& camera, const RenderSettings& settings, FilmState& state,

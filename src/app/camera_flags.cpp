@@ -129,6 +129,10 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "with --flare on, the most reflections a path takes in the lens: 0, 2 (default: the ghosts) "
                  "or 4")
       ->check(CLI::IsMember({0, 2, 4}));
+  cmd.add_option("--barrel-reflectance", o.barrelReflectance,
+                 "with --flare on, the diffuse reflectance K in [0, 1) of the barrel: a ray that meets a "
+                 "lens's mount (outside a surface's clear aperture, not the stop) scatters back with "
+                 "probability K, for veiling glare; default 0 (black)");
   cmd.add_option("--film", o.film,
                  "what a pixel records: radiance (the mean radiance along the camera rays, no cos^4, no "
                  "bellows factor, no exposure scale: pbrt's, Cycles' and Mitsuba's pinhole; the pinhole's "

@@ -36,8 +36,29 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
   filmZ_ = lens_->rearZ() + focusFilmDistance(*lens_, params.focusMetres * 1000.0);
   bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, sensorHalfDiagonalMm(film) * (1.0 + 1e-6),
                                               params.pupilIntervals);
-  scale_ = exposureScale(exposure, fNumber_);
+  scale_ = lensrt::exposureScale(exposure, fNumber_);
+  if (params.flareReflections) {
+    flareOptions_.maxReflections = *params.flareReflections;
+    flareOptions_.barrelReflectance = params.barrelReflectance;
+    // The same stop as traceLens(): the polygon, then the mask.
+    if (polygon_ || params.mask)
+      flareOptions_.stop = [polygon = polygon_, mask = params.mask, radius = stopRadius_](double x,
+                                                                                          double y) {
+        if (polygon && !polygon->contains({x, y})) return 0.0;
+        return mask ? mask->transmittance({x, y}, radius) : 1.0;
+      };
+  }
 }
+
+namespace {
+
+std::string barrelText(double reflectance) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, " barrel=%.9g", reflectance);
+  return buf;
+}
+
+}  // namespace
 
 std::string LensCamera::describe() const {
   char buf[240];
@@ -47,6 +68,8 @@ std::string LensCamera::describe() const {
   // Part of the render's identity (merge, resume): on and off differ, and so do coatings.
   return std::string(buf) + (dispersion_ ? " dispersion=on" : "") +
          (params_.flareReflections ? " flare=" + std::to_string(*params_.flareReflections) : std::string()) +
+         (params_.flareReflections && params_.barrelReflectance > 0.0 ? barrelText(params_.barrelReflectance)
+                                                                      : std::string()) +
          (params_.coatings ? " coatings=" + coatingName(*params_.coatings) : std::string()) +
          (params_.mask ? " mask=" + params_.mask->describe() : std::string());
 }
@@ -169,7 +192,7 @@ std::optional<CameraRay> LensCamera::flareRay(const CameraSample& s) const {
   const double wavelength = tracesWavelengths() ? double(s.wavelengthNm) : kWavelengthDNm;
   SampleStream random(s);
   const LensSystem::FlareTrace t =
-      lens_->traceFromFilmWithFlare({p, target - p}, *params_.flareReflections, random, wavelength);
+      lens_->traceFromFilmWithFlare({p, target - p}, flareOptions_, random, wavelength);
   if (t.end != LensSystem::FlareTrace::End::Scene) return std::nullopt;
   return cameraRay(t.ray, weight);
 }

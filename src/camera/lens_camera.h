@@ -29,8 +29,11 @@ struct LensCameraParams {
   std::shared_ptr<const ApertureMask> mask;
   // Stray light (lens flare): the most reflections a path takes in the lens
   // (LensSystem::traceFromFilmWithFlare), none: off. Needs coatings set (the
-  // reflectance) and neither blades nor a mask.
+  // reflectance). Blades and a mask shape the stop at every crossing, so
+  // the ghosts that pass it take its shape.
   std::optional<int> flareReflections;
+  // With flare: the barrel's diffuse reflectance in [0, 1) (LensSystem::FlareOptions).
+  double barrelReflectance = 0.0;
 };
 
 // The full element stack (Kolb et al. 1995): film point -> a point inside the
@@ -59,6 +62,13 @@ class LensCamera final : public Camera {
   const LensSystem& lens() const { return *lens_; }
   const ExitPupilBounds& bounds() const { return *bounds_; }
   double fNumber() const { return fNumber_; }
+  // With flare: how the stray-light traces run (the reflection limit, the
+  // barrel, the stop's blades or mask), for the light pass and for tests.
+  const LensSystem::FlareOptions& flareOptions() const { return flareOptions_; }
+  bool flare() const { return params_.flareReflections.has_value(); }
+  // What a pixel records per unit of film irradiance (the exposure scale):
+  // a camera ray's weight is this times the irradiance integrand over its pdf.
+  double exposureScale() const { return scale_; }
   double filmZ() const { return filmZ_; }
   // Camera space origin (the entrance pupil) in lens space z, mm.
   double entrancePupilZ() const { return entrancePupilZ_; }
@@ -99,8 +109,9 @@ class LensCamera final : public Camera {
   Exposure exposure_;
   std::unique_ptr<LensSystem> lens_;
   std::unique_ptr<ExitPupilBounds> bounds_;
-  std::optional<Aperture> polygon_;  // in the stop plane, when blades are set
-  double stopRadius_ = 0.0;          // of the stopped-down stop (mm): the mask's scale
+  std::optional<Aperture> polygon_;        // in the stop plane, when blades are set
+  LensSystem::FlareOptions flareOptions_;  // with flare: the limit, the barrel, the stop's shape
+  double stopRadius_ = 0.0;                // of the stopped-down stop (mm): the mask's scale
   double fNumber_ = 0.0;
   double filmZ_ = 0.0;
   double entrancePupilZ_ = 0.0;

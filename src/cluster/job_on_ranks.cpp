@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "cluster/distributed_render.h"
+#include "render/flare_light_pass.h"
 #include "render/progress.h"
 
 namespace lensrt {
@@ -24,7 +25,7 @@ RenderJobResult renderOnRanks(const RenderJob& job, const Camera& camera, const 
     renderAcrossRanks(cluster, camera, job.integrator(), settings, state, PassControl{}, &progress, signal);
   }
   RenderJobResult result;
-  result.output = renderOutput(camera, state);
+  result.output = renderOutput(camera, state, job.flareLight(camera, settings).get());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

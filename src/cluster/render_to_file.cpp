@@ -135,6 +135,8 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
     return interrupt.signal() ? interrupt.exitStatus() : 0;
   }
   FilmState& state = *leaderState;
+  // The flare light pass, once, for every image this process writes.
+  settings.flareLight = job.flareLight(*camera, settings);
 
   // Passes, checkpoints and signals (the handlers only while rendering).
   const InterruptHandler interrupt;
@@ -160,7 +162,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - lastCheckpoint).count() < args.checkpointSeconds) return;
       RenderJobResult partial;
-      partial.output = renderOutput(*camera, s);
+      partial.output = renderOutput(*camera, s, settings.flareLight.get());
       partial.seconds = std::chrono::duration<double>(now - started).count();
       const ImageMetadata metadata = metadataOf(partial);
       writeCheckpoint(args.output, s, partial.output.image, metadata);
@@ -177,7 +179,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
       finished = renderAcrossRanks(cluster, *camera, job.integrator(), settings, state, control, &progress,
                                    rankSignal, &gather);
     }
-    result.output = renderOutput(*camera, state);
+    result.output = renderOutput(*camera, state, settings.flareLight.get());
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   } else {
     result = job.renderPasses(*camera, settings, state, control, args.quiet, finished);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/constants.h"
 #include "optics/trace_lanes.h"
 
 namespace lensrt {
@@ -21,6 +22,16 @@ inline bool refractEta(const Vec3d& d, const Vec3d& n, double eta, Vec3d& out) {
   // Unit in, unit out: no renormalisation needed (callers normalise once at the end).
   out = d * eta + n * (eta * cosI - cosT);
   return true;
+}
+
+// The sag at the edge of a surface's clear aperture (mm from its vertex):
+// where its mount sits.
+double rimSag(const Surface& s, double apertureRadius) {
+  if (s.isAspheric())
+    if (const std::optional<double> z = s.profile().sag(apertureRadius * apertureRadius)) return *z;
+  if (s.radius == 0.0) return 0.0;
+  const double R = s.radius, a = std::min(apertureRadius, std::abs(R));
+  return R - std::copysign(std::sqrt(R * R - a * a), R);
 }
 
 }  // namespace
@@ -51,6 +62,7 @@ LensSystem::LensSystem(LensPrescription prescription, std::optional<Coating> coa
     t.etaFromFilm = t.ndAfter / ndBefore;
     t.etaFromScene = ndBefore / t.ndAfter;
     t.refracts = !t.isStop && t.ndAfter != ndBefore;
+    t.rimZ = z + rimSag(s, t.apertureRadius);
     surfaces_.push_back(t);
     spheres_.push_back(
         {t.z, t.radius, t.absInvRadius, t.invRadius2, t.apertureRadius2, t.refracts ? t.etaFromFilm : 0.0});
@@ -269,11 +281,15 @@ std::optional<LensRay> LensSystem::traceGhostFromScene(const LensRay& ray, int f
   return finished(o, d, transmittance);
 }
 
-LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, int maxReflections,
+// The barrel: a ray outside a surface's clear aperture (or missing the
+// surface) meets the mount, modelled as the annulus in the plane of the
+// surface's rim (rimZ) around the aperture, a Lambertian reflector of albedo
+// barrelReflectance facing the ray. The stop's blades are black.
+LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, bool fromFilm, const FlareOptions& options,
                                               const std::function<double()>& random, double wavelengthNm,
                                               std::vector<Vec3d>* path) const {
   FlareTrace result;
-  if (!validInput<true>(ray)) return result;
+  if (!(fromFilm ? validInput<true>(ray) : validInput<false>(ray))) return result;
   const int count = surfaceCount();
   const bool dLine = wavelengthNm == kWavelengthDNm;
   const auto indexAfter = [&](int i) {
@@ -283,24 +299,62 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, int maxReflect
   const Coating coating = coating_.value_or(Coating::None);
   Vec3d o = ray.origin, d = normalize(ray.direction);
   double weight = ray.transmittance;
-  int i = count - 1;
-  bool towardScene = true;
+  const auto bounce = [&](int surface, bool barrel) {
+    if (result.reflections < FlareTrace::kRecorded)
+      result.bounces[std::size_t(result.reflections)] = {surface, barrel};
+    ++result.reflections;
+  };
+  const auto absorb = [&] {
+    result.end = FlareTrace::End::Blocked;
+    result.ray = {o, d, weight};
+    result.absorbed += weight;
+    return result;
+  };
+  int i = fromFilm ? count - 1 : 0;
+  bool towardScene = fromFilm;
   while (true) {
-    if (i < 0) {
+    if (i < 0 || i >= count) {
       const std::optional<LensRay> out = finished(o, d, weight);
-      if (out) result = {FlareTrace::End::Scene, *out, result.reflections};
-      return result;
-    }
-    if (i >= count) {
-      result.end = FlareTrace::End::Film;
+      if (!out) return absorb();
+      result.end = i < 0 ? FlareTrace::End::Scene : FlareTrace::End::Film;
+      result.ray = *out;
       return result;
     }
     const TraceSurface& s = surfaces_[std::size_t(i)];
     const double before = indexAfter(i - 1), after = indexAfter(i);
     const double n1 = towardScene ? after : before, n2 = towardScene ? before : after;
     // Hit the surface (its aperture blocks), then bend by hand.
+    const Vec3d o0 = o, d0 = d;
     const bool reached = towardScene ? step<true>(s, 0.0, o, d, path) : step<false>(s, 0.0, o, d, path);
-    if (!reached) return result;
+    if (!reached) {
+      o = o0, d = d0;
+      const double t = (s.rimZ - o.z) / d.z;
+      if (s.isStop || !(options.barrelReflectance > 0.0) || !(t >= 0.0)) return absorb();
+      o = o + d * t;
+      if (path) path->push_back(o);
+      if (result.reflections >= options.maxReflections) {
+        // The scattered part is beyond the reflections allowed.
+        result.truncated += weight * options.barrelReflectance;
+        weight *= 1.0 - options.barrelReflectance;
+        return absorb();
+      }
+      if (random() >= options.barrelReflectance) return absorb();
+      // Cosine-distributed about the rim's normal, back the way it came.
+      const double u = random(), phi = 2.0 * kPi * random(), r = std::sqrt(u);
+      const double back = towardScene ? 1.0 : -1.0;
+      d = {r * std::cos(phi), r * std::sin(phi), back * std::sqrt(std::max(0.0, 1.0 - u))};
+      if (d.z == 0.0) return absorb();
+      towardScene = !towardScene;
+      bounce(i, true);
+      i += towardScene ? -1 : 1;
+      continue;
+    }
+    if (s.isStop && options.stop) {
+      const double t = std::clamp(options.stop(o.x, o.y), 0.0, 1.0);
+      result.absorbed += weight * (1.0 - t);
+      weight *= t;
+      if (!(weight > 0.0)) return absorb();
+    }
     if (!s.isStop && n1 != n2) {
       const Vec3d n = facingNormal(s, o, d);
       const double cosI = std::min(1.0, -dot(n, d));
@@ -309,13 +363,22 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, int maxReflect
       const double r = passes ? 1.0 - surfaceTransmittance(coating, n1, n2, cosI,
                                                            std::min(1.0, -dot(n, refracted)), wavelengthNm)
                               : 1.0;
-      if (result.reflections < maxReflections && random() < r) {
+      if (result.reflections < options.maxReflections && random() < r) {
         d = d + n * (2.0 * cosI);
         towardScene = !towardScene;
-        ++result.reflections;
+        bounce(i, false);
       } else {
-        if (!passes) return result;  // total internal reflection beyond the reflections allowed
-        if (result.reflections >= maxReflections) weight *= 1.0 - r;
+        if (result.reflections >= options.maxReflections) {
+          // Made to refract: the reflected part R is dropped (all of it
+          // under total internal reflection).
+          result.truncated += weight * r;
+          weight *= 1.0 - r;
+        }
+        if (!passes) {
+          result.end = FlareTrace::End::Blocked;
+          result.ray = {o, d, 0.0};
+          return result;
+        }
         d = refracted;
       }
     }

@@ -8,6 +8,7 @@
 // scene: the real image on the film is inverted (a camera flips it).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -82,31 +83,75 @@ class LensSystem {
                                              double wavelengthNm = kWavelengthDNm,
                                              std::vector<Vec3d>* path = nullptr) const;
 
-  // Stray light from the film side (lens flare): at every surface where the
-  // index changes the ray reflects with the Fresnel reflectance R (the
-  // lens's coating, bare glass without one) and refracts otherwise, chosen by
-  // `random` (uniform in [0, 1)) so that the weight stays exact: up to
-  // `maxReflections` reflections, after which it refracts with weight 1 - R.
-  // The stop and the rims block as in every trace. A ray ends toward the
-  // scene (even reflections), back at the film (odd: the film absorbs it),
-  // or blocked.
+  // Stray light (lens flare). At every surface where the index changes the
+  // ray reflects with the Fresnel reflectance R (the lens's coating, bare
+  // glass without one) and refracts otherwise, chosen by `random` (uniform in
+  // [0, 1)) so that the weight stays exact: up to `maxReflections`
+  // reflections, after which it refracts with weight 1 - R (the R dropped
+  // is `truncated`). The stop (times `stop`, when set: blades or a mask) and
+  // the rims block as in every trace; a rim (not the stop) scatters the ray
+  // diffusely back with probability `barrelReflectance` (the barrel: see
+  // flareTrace), which counts as a reflection.
+  struct FlareOptions {
+    int maxReflections = 2;
+    double barrelReflectance = 0.0;  // in [0, 1)
+    // The stop's transmittance at a point (x, y) of its plane (lens space,
+    // mm), in [0, 1], at every crossing; empty: the round stop alone.
+    std::function<double(double, double)> stop;
+  };
   struct FlareTrace {
+    // Where the ray ends: leaving the front surface toward the scene, leaving
+    // the rear surface toward the film (the film absorbs it), or absorbed.
     enum class End { Scene, Film, Blocked };
     End end = End::Blocked;
-    LensRay ray;  // toward the scene (End::Scene): its transmittance is the weight
-    int reflections = 0;
+    // Scene or Film: the ray leaving the lens, its transmittance the weight.
+    // Blocked: where it was absorbed.
+    LensRay ray;
+    int reflections = 0;  // glass reflections and barrel scatters
+    struct Bounce {
+      int surface = -1;
+      bool barrel = false;  // a scatter at the surface's rim
+    };
+    static constexpr int kRecorded = 4;
+    std::array<Bounce, kRecorded> bounces{};  // the first kRecorded, in order
+    // The weight lost on the way, so that the input's weight equals the
+    // output's plus these (light is moved, never created): absorbed by the
+    // stop, a mask or the barrel, and dropped by the reflection limit.
+    double absorbed = 0.0;
+    double truncated = 0.0;
   };
+  // From the film (direction.z < 0): End::Scene after even reflections,
+  // End::Film after odd ones.
+  template <class Random>
+  FlareTrace traceFromFilmWithFlare(const LensRay& ray, const FlareOptions& options, Random&& random,
+                                    double wavelengthNm = kWavelengthDNm,
+                                    std::vector<Vec3d>* path = nullptr) const {
+    return flareTrace(
+        ray, true, options, [&random] { return double(random()); }, wavelengthNm, path);
+  }
   template <class Random>
   FlareTrace traceFromFilmWithFlare(const LensRay& ray, int maxReflections, Random&& random,
                                     double wavelengthNm = kWavelengthDNm,
                                     std::vector<Vec3d>* path = nullptr) const {
+    return traceFromFilmWithFlare(ray, FlareOptions{maxReflections, 0.0, {}}, random, wavelengthNm, path);
+  }
+  // From the scene (direction.z > 0), the light's way (particle tracing):
+  // End::Film after even reflections, End::Scene (back out of the front)
+  // after odd ones.
+  template <class Random>
+  FlareTrace traceFromSceneWithFlare(const LensRay& ray, const FlareOptions& options, Random&& random,
+                                     double wavelengthNm = kWavelengthDNm,
+                                     std::vector<Vec3d>* path = nullptr) const {
     return flareTrace(
-        ray, maxReflections, [&random] { return double(random()); }, wavelengthNm, path);
+        ray, false, options, [&random] { return double(random()); }, wavelengthNm, path);
   }
 
  private:
-  FlareTrace flareTrace(const LensRay& ray, int maxReflections, const std::function<double()>& random,
-                        double wavelengthNm, std::vector<Vec3d>* path) const;
+  // The one stochastic loop behind both flare traces; fromFilm: the ray
+  // starts at the rear surface going toward the scene, else at the front.
+  FlareTrace flareTrace(const LensRay& ray, bool fromFilm, const FlareOptions& options,
+                        const std::function<double()>& random, double wavelengthNm,
+                        std::vector<Vec3d>* path) const;
   // Everything about a surface that does not depend on the ray, laid out for
   // the trace loop.
   struct TraceSurface {
@@ -129,6 +174,7 @@ class LensSystem {
     std::shared_ptr<const AsphereProfile> asphere;
     double ndAfter = 1.0;  // index after the surface (toward the film) at the d line
     Dispersion after;
+    double rimZ = 0.0;  // the plane of the rim around the clear aperture (the barrel, flareTrace)
   };
   // The unit normal of surface `s` at `hit` (lens space), facing against `d`.
   static Vec3d facingNormal(const TraceSurface& s, const Vec3d& hit, const Vec3d& d);

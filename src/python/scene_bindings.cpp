@@ -145,26 +145,47 @@ class PyScene {
 
   std::unique_ptr<PyRenderResult> render(const py::kwargs& given) const {
     // Every keyword, with the command line's defaults (`lensrt render --help`).
-    static const std::vector<std::string> known = {"camera",        "lens",
-                                                   "fstop",         "focus",
-                                                   "focus_pixel",   "sensor",
-                                                   "res",           "spp",
-                                                   "min_spp",       "noise_threshold",
-                                                   "seed",          "aov",
-                                                   "env",           "env_rotate",
-                                                   "env_intensity", "max_depth",
-                                                   "camera_node",   "camera_to_world",
-                                                   "threads",       "crop",
-                                                   "blades",        "blade_rotation",
-                                                   "aperture_mask", "focal_length",
-                                                   "exposure",      "shutter",
-                                                   "iso",           "dispersion",
-                                                   "coatings",      "flare",
-                                                   "flare_bounces", "film",
-                                                   "spectral",      "sensor_response",
-                                                   "white_balance", "output_space",
-                                                   "noise",         "sensor_params",
-                                                   "raw",           "cfa",
+    static const std::vector<std::string> known = {"camera",
+                                                   "lens",
+                                                   "fstop",
+                                                   "focus",
+                                                   "focus_pixel",
+                                                   "sensor",
+                                                   "res",
+                                                   "spp",
+                                                   "min_spp",
+                                                   "noise_threshold",
+                                                   "seed",
+                                                   "aov",
+                                                   "env",
+                                                   "env_rotate",
+                                                   "env_intensity",
+                                                   "max_depth",
+                                                   "camera_node",
+                                                   "camera_to_world",
+                                                   "threads",
+                                                   "crop",
+                                                   "blades",
+                                                   "blade_rotation",
+                                                   "aperture_mask",
+                                                   "focal_length",
+                                                   "exposure",
+                                                   "shutter",
+                                                   "iso",
+                                                   "dispersion",
+                                                   "coatings",
+                                                   "flare",
+                                                   "flare_bounces",
+                                                   "barrel_reflectance",
+                                                   "film",
+                                                   "spectral",
+                                                   "sensor_response",
+                                                   "white_balance",
+                                                   "output_space",
+                                                   "noise",
+                                                   "sensor_params",
+                                                   "raw",
+                                                   "cfa",
                                                    "progress"};
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
@@ -208,6 +229,8 @@ class PyScene {
       c.flare = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "flare");
     if (const py::object v = get("flare_bounces"); !v.is_none())
       c.flareBounces = int(toInteger(v, "flare_bounces", 0, 4));
+    if (const py::object v = get("barrel_reflectance"); !v.is_none())
+      c.barrelReflectance = toDouble(v, "barrel_reflectance");
     if (const py::object v = get("film"); !v.is_none()) c.film = toText(v, "film");
     if (const py::object v = get("spectral"); !v.is_none())
       c.spectral = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "spectral");
@@ -389,7 +412,8 @@ index to play one of them (None: all).)doc")
        env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
        exposure="normalized", shutter=None, iso=None, dispersion="on", coatings=None,
-       flare="off", flare_bounces=2, film=None, spectral="on", sensor_response=None, white_balance=None,
+       flare="off", flare_bounces=2, barrel_reflectance=0, film=None, spectral="on", sensor_response=None,
+       white_balance=None,
        output_space="srgb", noise="off", sensor_params=None, raw=None, cfa="RGGB",
        progress=None) -> RenderResult
 
@@ -424,6 +448,7 @@ settings and seed. Keywords only, each the flag of the same name:
   focal_length (mm), exposure ("normalized" or "physical"), shutter (seconds),
   iso, dispersion ("on"/"off" or bool), coatings ("none", "single", "multi"),
   flare ("on"/"off" or bool: stray light in the full lens), flare_bounces (0, 2, 4),
+  barrel_reflectance (the barrel's diffuse reflectance, 0 <= K < 1, with flare),
   film ("radiance" or "irradiance"): as the flags of `lensrt render --help`.
   spectral: "on"/True (default) carries light at four wavelengths per sample
     (colours upsampled to spectra, the CIE 1931 observer, sRGB); "off"/False

@@ -5,12 +5,14 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <span>
 #include <stdexcept>
 #include <vector>
 
+#include "render/flare_light_pass.h"
 #include "render/sampler.h"
 
 namespace lensrt {
@@ -189,9 +191,18 @@ bool renderPasses(const Camera& camera, const Integrator& integrator, const Rend
   return true;
 }
 
-RenderOutput renderOutput(const Camera& camera, const FilmState& state) {
+RenderOutput renderOutput(const Camera& camera, const FilmState& state, const FlareImage* flareLight) {
   RenderOutput out;
   out.image = state.image(camera.film().width, camera.film().height);
+  if (flareLight) {
+    const PixelRegion region = state.region();
+    const std::array<int, 3> rgb{out.image.channelIndex("R"), out.image.channelIndex("G"),
+                                 out.image.channelIndex("B")};
+    for (int y = region.y0; y < region.y1; ++y)
+      for (int x = region.x0; x < region.x1; ++x)
+        for (int c = 0; c < 3; ++c)
+          out.image.at(x - region.x0, y - region.y0, rgb[std::size_t(c)]) += flareLight->at(x, y)[c];
+  }
   out.droppedSamples = state.droppedSamples();
   out.cameraSamples = state.samplesTaken();
   out.samplesDone = state.samplesDone();
@@ -208,7 +219,7 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator, con
     throw std::invalid_argument("adaptive sampling needs a positive noise threshold and at least 1 sample");
   FilmState state(settings.region.value_or(PixelRegion::wholeFrame(film.width, film.height)), settings.aovs);
   renderPasses(camera, integrator, settings, state, nullptr, progress);
-  return renderOutput(camera, state);
+  return renderOutput(camera, state, settings.flareLight.get());
 }
 
 }  // namespace lensrt

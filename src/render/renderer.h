@@ -26,6 +26,8 @@
 
 namespace lensrt {
 
+struct FlareImage;  // render/flare_light_pass.h
+
 struct RenderSettings {
   int samplesPerPixel = 16;  // the total to reach (a resumed render has done some); adaptive: the most
   // Stops converged pixels early (adaptive_sampling.h); none: every pixel
@@ -42,6 +44,9 @@ struct RenderSettings {
   // shutter); none: every ray at time 0, with the bits of a render before
   // motion existed.
   std::optional<ShutterTiming> timing;
+  // --flare on: the light pass's image of the punctual lights, the whole
+  // frame, added to the output's R, G and B (renderOutput); none: nothing.
+  std::shared_ptr<const FlareImage> flareLight;
 };
 
 struct RenderOutput {
@@ -83,7 +88,10 @@ struct PassControl {
 bool renderPasses(const Camera& camera, const Integrator& integrator, const RenderSettings& settings,
                   FilmState& state, const PassControl* control = nullptr, Progress* progress = nullptr);
 
-// The output of a finished (or stopped) state.
-RenderOutput renderOutput(const Camera& camera, const FilmState& state);
+// The output of a finished (or stopped) state, plus the region's pixels of
+// the flare light pass when there is one (the camera paths' sums stay
+// apart from it, in the state, so checkpoints and resumes keep their bits).
+RenderOutput renderOutput(const Camera& camera, const FilmState& state,
+                          const FlareImage* flareLight = nullptr);
 
 }  // namespace lensrt

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # MPI end to end with Open MPI's mpirun (2 ranks on this machine); each MODE
 # is one ctest entry of a few seconds:
-#   models     2 ranks render the bits of one process for every camera model
+#   models     2 ranks render the bits of one process for every camera model,
+#              and with --flare on for a lamp in frame
 #   failures   a bad scene, a rank without the scene or with another copy of
 #              it, a rank killed mid-render: the job fails once, no output
 #   resume     checkpoints of a crop written and resumed under MPI (and
@@ -63,6 +64,14 @@ models)
     [[ $(iinfo -v one.exr | grep -E "$counts") == "$(iinfo -v two.exr | grep -E "$counts")" ]] ||
       fail "$cam: the sample counts differ"
   done
+  # --flare on with a lamp in frame: the camera paths and the light pass
+  # (which the rank writing the image adds whole) give the bits of one process.
+  # shellcheck disable=SC2054
+  flare=(render "$src/scenes/point_light_plane.gltf" --res 24x24 --spp 3 --seed 11 -q --camera lens
+    --lens dgauss-50mm --fstop 4 --focus 1 --flare on)
+  "$lensrt" "${flare[@]}" -o one.exr
+  "${mpi[@]}" "$lensrt" "${flare[@]}" --tile-size 4 -o two.exr
+  same one.exr two.exr "--flare on: 2 ranks against 1 process"
   ;;
 
 adaptive)

@@ -155,7 +155,7 @@ def test_every_keyword_is_read(dof, tmp_path):
                         env_rotate=10, env_intensity=0.5, max_depth=3, camera_node=0, camera_to_world=pose,
                         threads=1, crop=(0, 24, 0, 16), blades=6, blade_rotation=15, aperture_mask=None,
                         focal_length=None, exposure="physical", shutter=1 / 250, iso=400, dispersion=False,
-                        coatings="multi", flare=False, flare_bounces=2, film="irradiance", spectral=True, sensor_response="cie1931", white_balance=5000,
+                        coatings="multi", flare=False, flare_bounces=2, barrel_reflectance=0, film="irradiance", spectral=True, sensor_response="cie1931", white_balance=5000,
                         output_space="acescg", noise=True, sensor_params="smartphone",
                         raw=tmp_path / "a.dng", cfa="GRBG", progress=lambda done, total: None)
     m = result.metadata
@@ -172,7 +172,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
     render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
     keywords = [a.arg for a in render.args.kwonlyargs]
-    assert len(keywords) == 41
+    assert len(keywords) == 42
     doc = lensrt.Scene.render.__doc__
     for k in keywords:
         assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line
@@ -307,12 +307,14 @@ def test_time_poses_the_animated_scene(tmp_path):
 
 
 def test_flare_and_keyframed_fstop_are_the_command_lines(dof, cli, tmp_path):
-    """flare=, flare_bounces= and an fstop given as keyframes render the bits
+    """flare=, flare_bounces=, barrel_reflectance= and an fstop given as keyframes render the bits
     of `lensrt render` with the same flags."""
     out = tmp_path / "cli.exr"
     cli("render", DOF, "--camera", "lens", "--lens", "dgauss-50mm", "--fstop", "0:4,2:8", "--flare", "on",
-        "--flare-bounces", "2", "--coatings", "single", "--res", "32x18", "--spp", "2", "-q", "-o", out)
+        "--flare-bounces", "2", "--barrel-reflectance", "0.25", "--coatings", "single", "--res", "32x18", "--spp", "2",
+        "-q", "-o", out)
     result = dof.render(camera="lens", lens="dgauss-50mm", fstop="0:4,2:8", flare=True, flare_bounces=2,
+                        barrel_reflectance=0.25,
                         coatings="single", res=(32, 18), spp=2)
-    assert "flare=2" in result.metadata["lensrt:camera"] and result.metadata["lensrt:f_number"] == "4"
+    assert "flare=2 barrel=0.25" in result.metadata["lensrt:camera"] and result.metadata["lensrt:f_number"] == "4"
     assert lensrt.diff(out, result, fail=0, warn=0)["overall"]["maxError"] == 0.0
