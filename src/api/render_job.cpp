@@ -275,7 +275,7 @@ ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& se
       {"lensrt:camera", camera.describe()},
       {"lensrt:settings",
        fmt::format(
-           "res={}x{} max_depth={} environment={} channels={} transport={}{}{}", width_, height_,
+           "res={}x{} max_depth={} environment={} channels={} transport={}{}{}{}", width_, height_,
            frame_.maxDepth, environment_->describe(), aovs, transportDescription(settings.filmResponse.get()),
            adaptive,
            scene_->geometry().desc().pose.empty() ? std::string() : " " + scene_->geometry().desc().pose,

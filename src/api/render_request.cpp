@@ -29,7 +29,16 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
                     Warnings& warnings, const RenderProgress& progress) {
   FrameOptions frame = request.frame;
   frame.quiet = false;  // the caller decides what to do with warnings
-  const RenderJob job(scene, frame, warnings);
+  // An animated scene moves over the time this frame records: posed again
+  // over that span when it was loaded for another.
+  std::shared_ptr<const Scene> posed = scene;
+  if (const double span = recordedSpanSeconds(request.camera);
+      !scene->geometry().desc().pose.empty() && scene->options().time.spanSeconds != span) {
+    SceneLoadOptions options = scene->options();
+    options.time.spanSeconds = span;
+    posed = std::make_shared<const Scene>(options, warnings);
+  }
+  const RenderJob job(posed, frame, warnings);
   checkImageFitsInMemory(job.width(), job.height(), filmChannels(request.settings.aovs).size());
   const std::unique_ptr<Camera> camera = job.makeCamera(request.camera, warnings);
   const FilmColour colour = filmColour(request.camera, job.dominantLightColour(), warnings);

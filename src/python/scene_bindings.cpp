@@ -133,6 +133,9 @@ class PyScene {
     options.limits = sceneReadLimits(access);
     options.time.seconds = toDouble(time, "time");
     if (!animation.is_none()) options.time.animation = py::str(animation);
+    // Posed over the default shutter, as lensrt render does; render() poses
+    // it again for another shutter or a rolling shutter.
+    options.time.spanSeconds = recordedSpanSeconds(CameraOptions{});
     WarningList warnings(options.file);
     {
       const py::gil_scoped_release release;
@@ -171,6 +174,9 @@ class PyScene {
                                                    "focal_length",
                                                    "exposure",
                                                    "shutter",
+                                                   "shutter_curve",
+                                                   "rolling_shutter",
+                                                   "readout",
                                                    "iso",
                                                    "dispersion",
                                                    "coatings",
@@ -221,6 +227,9 @@ class PyScene {
     c.focalLengthMm = toOptionalDouble(get("focal_length"), "focal_length");
     if (const py::object v = get("exposure"); !v.is_none()) c.exposure = toText(v, "exposure");
     c.shutter = toShutter(get("shutter"));
+    if (const py::object v = get("shutter_curve"); !v.is_none()) c.shutterCurve = toText(v, "shutter_curve");
+    c.rollingShutter = toShutter(get("rolling_shutter"));
+    if (const py::object v = get("readout"); !v.is_none()) c.readout = toText(v, "readout");
     c.iso = toOptionalDouble(get("iso"), "iso");
     if (const py::object v = get("dispersion"); !v.is_none())
       c.dispersion = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "dispersion");
@@ -411,7 +420,8 @@ index to play one of them (None: all).)doc")
        aov=(), env=None, env_rotate=0,
        env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
-       exposure="normalized", shutter=None, iso=None, dispersion="on", coatings=None,
+       exposure="normalized", shutter=None, shutter_curve="box", rolling_shutter=None,
+       readout="top-down", iso=None, dispersion="on", coatings=None,
        flare="off", flare_bounces=2, barrel_reflectance=0, film=None, spectral="on", sensor_response=None,
        white_balance=None,
        output_space="srgb", noise="off", sensor_params=None, raw=None, cfa="RGGB",
@@ -445,7 +455,11 @@ settings and seed. Keywords only, each the flag of the same name:
     camera looks down its -Z axis with +Y up (glTF).
   crop: (x0, x1, y0, y1) pixels to render, x1 and y1 exclusive.
   blades, blade_rotation (deg), aperture_mask (a grey-scale image file),
-  focal_length (mm), exposure ("normalized" or "physical"), shutter (seconds),
+  focal_length (mm), exposure ("normalized" or "physical"), shutter (seconds:
+  the exposure, and the motion blur of an animated scene; 0 an instant),
+  shutter_curve ("box" or "trapezoid:F"), rolling_shutter (the readout in
+  seconds, None: a global shutter), readout ("top-down", "bottom-up",
+  "left-right", "right-left"),
   iso, dispersion ("on"/"off" or bool), coatings ("none", "single", "multi"),
   flare ("on"/"off" or bool: stray light in the full lens), flare_bounces (0, 2, 4),
   barrel_reflectance (the barrel's diffuse reflectance, 0 <= K < 1, with flare),

@@ -172,7 +172,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
     render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
     keywords = [a.arg for a in render.args.kwonlyargs]
-    assert len(keywords) == 42
+    assert len(keywords) == 45
     doc = lensrt.Scene.render.__doc__
     for k in keywords:
         assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line
@@ -318,3 +318,21 @@ def test_flare_and_keyframed_fstop_are_the_command_lines(dof, cli, tmp_path):
                         coatings="single", res=(32, 18), spp=2)
     assert "flare=2 barrel=0.25" in result.metadata["lensrt:camera"] and result.metadata["lensrt:f_number"] == "4"
     assert lensrt.diff(out, result, fail=0, warn=0)["overall"]["maxError"] == 0.0
+
+
+def test_motion_blur_and_rolling_shutter_are_the_command_lines(cli, tmp_path):
+    """An animated scene renders with the motion of the shutter it is given: the Scene is
+    posed again for a span other than the default shutter's, with the bits of `lensrt render`;
+    a shutter of 0 is the still frame, which a rolling shutter bends."""
+    path = SCENES / "propeller.gltf"
+    scene = lensrt.Scene(path, time=0.1)
+    out = tmp_path / "cli.exr"
+    flags = ["--res", "32x32", "--spp", "2", "--shutter", "1/2000", "--rolling-shutter", "1/60"]
+    cli("render", path, "--time", "0.1", *flags, "-q", "-o", out)
+    rolling = scene.render(res=(32, 32), spp=2, shutter="1/2000", rolling_shutter=1 / 60)
+    assert lensrt.diff(out, rolling, fail=0, warn=0)["overall"]["maxError"] == 0.0
+    assert "rolling top-down" in rolling.metadata["lensrt:settings"]
+    still = scene.render(res=(32, 32), spp=2, shutter=0)
+    assert np.abs(still.rgb - rolling.rgb).mean() > 0.01
+    with pytest.raises(ValueError, match="--readout"):
+        scene.render(res=(8, 8), spp=1, rolling_shutter=0.01, readout="diagonal")
