@@ -90,7 +90,9 @@ void exercise(const std::filesystem::path& file) {
   // budget stays well inside libFuzzer's 2 GB memory limit.
   SceneReadLimits limits;
   limits.maxTextureBytes = std::uint64_t{512} << 20;
-  SceneDesc desc = loadGltf(file, -1, warnings, limits);
+  // Posed over a span: an animated file also goes through the motion
+  // steps (scene_motion.h) and Embree's motion-blur meshes.
+  SceneDesc desc = loadGltf(file, -1, warnings, limits, AnimationTime{0.0, "", 0.5});
   const CameraDesc camera = selectCamera(desc, "", 1.5f);
   LENSRT_FUZZ_CHECK(isFinite(camera.worldFromCamera.point(Vec3f{0, 0, 0})));
   const RenderScene scene(std::move(desc));
@@ -103,7 +105,7 @@ void exercise(const std::filesystem::path& file) {
     const Vec3f target = i < 8 ? corner : b.center();
     const Vec3f d = target - eye;
     if (length(d) > 0.0f && isFinite(d)) {
-      const Ray ray{eye, normalize(d)};
+      const Ray ray{eye, normalize(d), 0.0f, kInfinityF, (i & 1) ? 0.5f : 0.0f};
       checkHit(scene, materials, ray, scene.intersect(ray));
     }
     const Vec3f axis{i % 3 == 0 ? 1.f : 0.f, i % 3 == 1 ? 1.f : 0.f, i % 3 == 2 ? 1.f : 0.f};
