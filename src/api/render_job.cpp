@@ -179,8 +179,13 @@ std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warn
 
 std::optional<ShutterTiming> RenderJob::shutterTiming(const CameraOptions& options,
                                                       Warnings& warnings) const {
-  const ShutterTiming timing = lensrt::shutterTiming(options);
+  ShutterTiming timing = lensrt::shutterTiming(options);
   if (scene_->geometry().desc().motionSteps > 0) {
+    // The glTF camera's node moves (unless a pose replaced it): rays follow it.
+    if (!gltfCamera_.motion.empty() && !frame_.worldFromCamera) {
+      const Transform fromOpening = gltfCamera_.motion.front().inverse();
+      for (const Transform& at : gltfCamera_.motion) timing.cameraSteps.push_back(at * fromOpening);
+    }
     // The scene was loaded for the same span (the caller's SceneOptions).
     if (std::abs(timing.spanSeconds() - scene_->options().time.spanSeconds) >
         1e-9 * std::max(1.0, timing.spanSeconds()))

@@ -113,9 +113,11 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           // The time shares the wavelength's Sobol pair (its second
           // coordinate, unused otherwise), so the two are stratified together.
           for (std::size_t k = 0; k < n; ++k)
-            if (rays[k])
+            if (rays[k]) {
               rays[k]->ray.time = settings.timing->sampleTime(samples[k].film, film.width, film.height,
                                                               samplers[k].get2D(kDimWavelength).y);
+              rays[k]->ray = settings.timing->moveWithCamera(rays[k]->ray);
+            }
         }
         for (std::size_t k = 0; k < n; ++k) {
           const std::uint64_t j = first + k;

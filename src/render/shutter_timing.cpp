@@ -33,6 +33,18 @@ float ShutterTiming::sampleTime(const Vec2f& film, int width, int height, float 
   return float(std::clamp(t, 0.0, 1.0));
 }
 
+Ray ShutterTiming::moveWithCamera(const Ray& ray) const {
+  if (cameraSteps.size() < 2) return ray;
+  const float f = std::clamp(ray.time, 0.0f, 1.0f) * float(cameraSteps.size() - 1);
+  const std::size_t k = std::min(static_cast<std::size_t>(f), cameraSteps.size() - 2);
+  const float a = f - float(k);
+  const Transform &m0 = cameraSteps[k], &m1 = cameraSteps[k + 1];
+  Ray moved = ray;
+  moved.origin = m0.point(ray.origin) * (1 - a) + m1.point(ray.origin) * a;
+  moved.direction = normalize(m0.vector(ray.direction) * (1 - a) + m1.vector(ray.direction) * a);
+  return moved;
+}
+
 std::string ShutterTiming::describe() const {
   std::string s = rampFraction > 0 ? fmt::format("trapezoid:{:g} {:g} s", rampFraction, shutterSeconds)
                                    : fmt::format("box {:g} s", shutterSeconds);

@@ -6,7 +6,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "core/ray.h"
+#include "core/transform.h"
 #include "core/vec.h"
 
 namespace lensrt {
@@ -20,11 +23,18 @@ struct ShutterTiming {
   // (and again to close), the transmission rising and falling linearly; 0: a
   // box (instant opening).
   double rampFraction = 0.0;
+  // The camera's own motion over the span, as world-to-world transforms
+  // from its pose at the opening to its pose at evenly spaced steps (the
+  // first the identity); empty: the camera is still. A camera ray is moved
+  // by these interpolated linearly at its time, as Embree moves geometry.
+  std::vector<Transform> cameraSteps;
 
   double spanSeconds() const { return shutterSeconds + readoutSeconds; }
   // The time, in [0, 1] of the span, of a sample at raster position `film`
   // (pixels, continuous) of a width x height frame, from a uniform `u`.
   float sampleTime(const Vec2f& film, int width, int height, float u) const;
+  // `ray` (made at the opening pose) moved with the camera to its time.
+  Ray moveWithCamera(const Ray& ray) const;
   // "box 0.01 s", "trapezoid:0.2 0.01 s, rolling top-down 0.03 s": for the metadata.
   std::string describe() const;
 };

@@ -158,6 +158,9 @@ struct CameraDesc {
   float yfov = 0.6911f;              // radians (perspective)
   std::optional<float> aspectRatio;  // width / height if the file gives one
   float znear = 0.01f;
+  // Motion blur: worldFromCamera at each of the scene's motion steps (the
+  // first being worldFromCamera); empty when the camera is still.
+  std::vector<Transform> motion{};
 };
 
 struct SceneDesc {
@@ -171,8 +174,8 @@ struct SceneDesc {
   // The moment the nodes are posed at, "time=1.25 animation=all", when the
   // file has animations; empty when it has none (part of a render's identity).
   std::string pose;
-  // Time steps of the moving instances (their `motion`), spread evenly over
-  // the span the scene was loaded for; 0 when nothing moves.
+  // Time steps of the moving instances and cameras (their `motion`), spread
+  // evenly over the span the scene was loaded for; 0 when nothing moves.
   int motionSteps = 0;
 
   Bounds3f worldBounds() const;

@@ -72,7 +72,8 @@ void addMotion(SceneDesc& still, const std::vector<SceneDesc>& poses, Warnings& 
   if (poses.empty()) return;
   const std::size_t stillMeshes = still.meshes.size();
   for (const SceneDesc& pose : poses) {
-    bool same = pose.instances.size() == still.instances.size() && pose.meshes.size() >= 1;
+    bool same =
+        pose.instances.size() == still.instances.size() && pose.cameras.size() == still.cameras.size();
     for (std::size_t i = 0; same && i < pose.instances.size(); ++i)
       same = sameMeshShape(still.meshes[still.instances[i].mesh], pose.meshes[pose.instances[i].mesh]);
     if (!same) {
@@ -111,11 +112,26 @@ void addMotion(SceneDesc& still, const std::vector<SceneDesc>& poses, Warnings& 
     if (!moves) steps.clear();
     anyMoves = anyMoves || moves;
   }
+  // Cameras, in the same order in every pose.
+  std::vector<std::vector<Transform>> cameraMotion(still.cameras.size());
+  for (std::size_t c = 0; c < still.cameras.size(); ++c) {
+    bool moves = false;
+    cameraMotion[c].push_back(still.cameras[c].worldFromCamera);
+    for (const SceneDesc& pose : poses) {
+      const Transform& at =
+          c < pose.cameras.size() ? pose.cameras[c].worldFromCamera : still.cameras[c].worldFromCamera;
+      moves = moves || !(at == still.cameras[c].worldFromCamera);
+      cameraMotion[c].push_back(at);
+    }
+    if (!moves) cameraMotion[c].clear();
+    anyMoves = anyMoves || moves;
+  }
   if (!anyMoves) {
     still.meshes.resize(stillMeshes);
     return;
   }
   for (std::size_t i = 0; i < still.instances.size(); ++i) still.instances[i].motion = std::move(motion[i]);
+  for (std::size_t c = 0; c < still.cameras.size(); ++c) still.cameras[c].motion = std::move(cameraMotion[c]);
   still.motionSteps = static_cast<int>(poses.size()) + 1;
 }
 

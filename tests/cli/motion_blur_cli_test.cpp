@@ -34,7 +34,7 @@ constexpr double kPixelsPerMetre = 100;  // orthographic xmag = ymag = 1 m over 
 // that far out along its x axis, so a rotation spins it in a circle.
 std::string animatedRectangle(double width, double height, const std::string& path,
                               const std::vector<float>& times, const std::vector<float>& values,
-                              double radius = 0) {
+                              double radius = 0, int animatedNode = 0) {
   const float w = float(width / 2), h = float(height / 2);
   const float positions[] = {-w, -h, 0, w, -h, 0, w, h, 0, -w, h, 0};
   const unsigned short indices[] = {0, 1, 2, 0, 2, 3, 0, 0};
@@ -87,7 +87,7 @@ std::string animatedRectangle(double width, double height, const std::string& pa
        {{{"byteLength", data.size()}, {"uri", "data:application/octet-stream;base64," + cli::base64(data)}}}},
       {"animations",
        {{{"name", "move"},
-         {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", path}}}}}},
+         {"channels", {{{"sampler", 0}, {"target", {{"node", animatedNode}, {"path", path}}}}}},
          {"samplers", {{{"input", 2}, {"output", 3}, {"interpolation", "LINEAR"}}}}}}},
   };
   return doc.dump();
@@ -96,6 +96,13 @@ std::string animatedRectangle(double width, double height, const std::string& pa
 // The rectangle moving along +x at `speed` m/s from x = -1 at t = 0.
 std::string movingRectangle(double width, double height, double speed) {
   return animatedRectangle(width, height, "translation", {0, 10}, {-1, 0, 0, float(-1 + 10 * speed), 0, 0});
+}
+
+// The rectangle still at the origin, and the camera (node 1, 5 m up the z
+// axis) moving along +x at `speed` m/s from x = -1 at t = 0.
+std::string movingCamera(double width, double height, double speed) {
+  return animatedRectangle(width, height, "translation", {0, 10}, {-1, 0, 5, float(-1 + 10 * speed), 0, 5}, 0,
+                           1);
 }
 
 // The rectangle at `radius` turning about the z axis at 90 degrees a second
@@ -182,6 +189,16 @@ TEST(MotionBlurCli, AnEmitterMovingAtConstantSpeedMakesAStreakVTLong) {
   for (std::size_t x = 0; x < stillProfile.size(); ++x)
     stillSum += stillProfile[x], blurSum += blurProfile[x];
   EXPECT_NEAR(blurSum / stillSum, 1.0, 0.01);
+}
+
+// The camera's node moving at 1 m/s past a still emitter during 0.4 s: the
+// same 40 px streak, the camera's rays moved with it to their time. (A
+// camera left at its opening pose shows the emitter 10 px wide.)
+TEST(MotionBlurCli, ACameraMovingPastAnEmitterStreaksIt) {
+  const TempDir dir;
+  cli::writeFile(dir / "pan.gltf", movingCamera(0.1, 0.4, 1.0));
+  const Image blur = render(dir, "pan.gltf", "pan.exr", {"--time", "0.8", "--shutter", "0.4"});
+  EXPECT_NEAR(widthAtHalf(columnProfile(blur, 90, 110), 0.1 / 0.4), 0.4 * kPixelsPerMetre, 1.0);
 }
 
 // A trapezoid shutter opening over a quarter of the interval and closing
