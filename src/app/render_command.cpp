@@ -12,6 +12,7 @@
 #include "api/render_options.h"
 #include "app/camera_flags.h"
 #include "app/command.h"
+#include "app/frame_sequence.h"
 #include "app/option_checks.h"
 #include "app/render_flags.h"
 #include "cluster/cluster.h"
@@ -38,6 +39,7 @@ struct RenderArgs {
   std::string resume;
   bool quiet = false;
   CameraOptions camera;
+  std::string frames;  // --frames A:B[:STEP]; empty: one frame
 };
 
 std::string checkCrop(const std::string& text) {
@@ -92,7 +94,21 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   job.resume = args.resume;
   job.quiet = args.quiet;
   job.commandLine = context.commandLine;
-  return renderToFile(job, *context.cluster);
+  if (args.frames.empty()) return renderToFile(job, *context.cluster);
+  // A sequence: each frame is the render `--frame N` gives, to its own file.
+  const FrameRange range = parseFrames(args.frames);
+  if (args.frame.time || args.frame.frame)
+    throw UsageError("--frames", "give --frames A:B, or --time / --frame for one frame, not both");
+  if (!args.resume.empty())
+    throw UsageError("--frames", "--resume continues one frame's checkpoint: resume it alone with --frame N");
+  frameFileName(args.output, range.first);  // the pattern, checked before any work
+  for (int f = range.first; f <= range.last; f += range.step) {
+    FileRender frame = job;
+    frame.scene.time.seconds = double(f) / args.frame.fps;
+    frame.output = frameFileName(args.output, f);
+    if (const int status = renderToFile(frame, *context.cluster); status != 0) return status;
+  }
+  return 0;
 }
 
 }  // namespace
@@ -182,6 +198,11 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
          "every SECONDS, write the image so far to -o (atomically) with its running sums in OUT.sums, "
          "so that --resume can continue it exactly, e.g. --checkpoint 600")
       ->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--frames", args->frames,
+                  "render frames A to B (every STEP-th) of the animation at --fps, each as --frame N would, "
+                  "to the output's name with its # marks or %04d replaced by the frame number, e.g. --frames "
+                  "0:47 -o out/f.####.exr")
+      ->check(checkWith(parseFrames, "A:B[:STEP]"));
   cmd->add_option("--resume", args->resume,
                   "continue the checkpoint CHECKPOINT.exr (same scene, camera and settings) to --spp, e.g. "
                   "--resume out/a.exr");

@@ -5,9 +5,11 @@
 // moving sideways under a rolling shutter of readout R slants by v R over
 // the frame's height; a tiny shutter gives the still frame; and the bits do
 // not depend on threads or tiles.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -327,6 +329,42 @@ TEST(MotionBlurCli, MotionBlurIsTheSameBitsOnAnyThreadsAndTiles) {
       {"merge", (dir / "p0.exr").string(), (dir / "p1.exr").string(), "-o", (dir / "m.exr").string()});
   ASSERT_EQ(m.status, 0) << m.err;
   EXPECT_EQ(one.pixels, readImage(dir / "m.exr").pixels);
+}
+
+// --frames renders each frame of the range to its own file, bit for bit the
+// render of that --frame; a name without a frame number is refused before
+// any work.
+TEST(MotionBlurCli, FramesRenderEachFrameAsFrameDoes) {
+  const TempDir dir;
+  cli::writeFile(dir / "slide.gltf", movingRectangle(0.1, 0.4, 1.0));
+  const std::vector<std::string> common{"--fps", "4", "--shutter", "0.05"};
+  const auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.end(), common.begin(), common.end());
+    return extra;
+  };
+  std::vector<std::string> sequence{
+      "render", (dir / "slide.gltf").string(), "--env", "none", "--res", "200x200", "--spp", "2", "-q",
+      "-o",     (dir / "f.##.exr").string()};
+  for (const std::string& a : with({"--frames", "2:6:2"})) sequence.push_back(a);
+  const RunResult r = runLensrt(sequence);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const int f : {2, 4, 6}) {
+    const Image one = render(dir, "slide.gltf", "one.exr", with({"--frame", std::to_string(f)}), 2);
+    EXPECT_EQ(readImage(dir / fmt::format("f.{:02d}.exr", f)).pixels, one.pixels) << f;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "f.03.exr"));
+  const RunResult plain = runLensrt(
+      {"render", (dir / "slide.gltf").string(), "--frames", "0:2", "-o", (dir / "plain.exr").string()});
+  EXPECT_EQ(plain.status, 2);
+  EXPECT_NE(plain.err.find("# marks or %04d"), std::string::npos) << plain.err;
+  const RunResult both = runLensrt({"render", (dir / "slide.gltf").string(), "--frames", "0:2", "--time", "1",
+                                    "-o", (dir / "f%03d.exr").string()});
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("not both"), std::string::npos) << both.err;
+  const RunResult backwards = runLensrt(
+      {"render", (dir / "slide.gltf").string(), "--frames", "5:2", "-o", (dir / "f%03d.exr").string()});
+  EXPECT_EQ(backwards.status, 2);
+  EXPECT_NE(backwards.err.find("A <= B"), std::string::npos) << backwards.err;
 }
 
 TEST(MotionBlurCli, BadShutterFlagsAreOneLineUsageErrors) {
