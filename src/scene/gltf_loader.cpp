@@ -703,6 +703,9 @@ SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& 
   desc.sourceFile = name;
   gltf::loadMaterials(ctx, desc);
   const std::map<int, gltf::AnimatedTrs> animated = gltf::animatedNodes(ctx, time);
+  if (model.animations.empty() && time.seconds != 0)
+    warnings.warn(
+        fmt::format("--time {:g}: the file has no animation, so it renders as it is at rest", time.seconds));
   if (!model.animations.empty())
     desc.pose =
         fmt::format("time={:g} animation={}{}", time.seconds, time.animation.empty() ? "all" : time.animation,

@@ -367,6 +367,21 @@ TEST(MotionBlurCli, FramesRenderEachFrameAsFrameDoes) {
   EXPECT_NE(backwards.err.find("A <= B"), std::string::npos) << backwards.err;
 }
 
+// A moment or a rolling shutter asked of a scene that does not move: one
+// notice each, and the image of the scene at rest.
+TEST(MotionBlurCli, TimeOnAStillSceneGivesANotice) {
+  const TempDir dir;
+  const std::string cornell = std::string(LENSRT_SOURCE_DIR) + "/scenes/cornell.gltf";
+  const RunResult r = runLensrt({"render", cornell, "--time", "2", "--rolling-shutter", "0.01", "--res",
+                                 "16x16", "--spp", "1", "-o", (dir / "a.exr").string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("--time 2: the file has no animation"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the rolling shutter and shutter curve change nothing"), std::string::npos) << r.err;
+  const RunResult still =
+      runLensrt({"render", cornell, "--res", "16x16", "--spp", "1", "-q", "-o", (dir / "b.exr").string()});
+  EXPECT_EQ(readImage(dir / "a.exr").pixels, readImage(dir / "b.exr").pixels);
+}
+
 TEST(MotionBlurCli, BadShutterFlagsAreOneLineUsageErrors) {
   const TempDir dir;
   cli::writeFile(dir / "slide.gltf", movingRectangle(0.1, 0.4, 1.0));
