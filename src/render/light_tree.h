@@ -1,0 +1,67 @@
+// A bounding volume hierarchy over lights that picks one for a shading point
+// with probability roughly proportional to what it contributes there (Conty
+// Estevez and Kulla 2018; pbrt-v4's BVHLightSampler). Each inner node steps
+// to a child with probability proportional to the child's importance at the
+// point, so near, bright, facing lights are chosen more often than the power
+// alone would choose them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/vec.h"
+#include "render/light_bounds.h"
+
+namespace lensrt {
+
+struct LightPick {
+  std::size_t light;  // index into the vector the tree was built from
+  float pmf;          // the probability of this pick from this point
+};
+
+class LightTree {
+ public:
+  LightTree() = default;
+  // One entry per light; those whose phi is not > 0 (or not finite) are left
+  // out and never picked. The build is serial and deterministic.
+  explicit LightTree(const std::vector<LightBounds>& lights);
+
+  bool empty() const { return nodes_.empty(); }
+  std::size_t nodeCount() const { return nodes_.size(); }
+  // The bounds of all its lights (phi 0 when empty).
+  LightBounds rootBounds() const { return nodes_.empty() ? LightBounds{} : nodes_[0].bounds; }
+
+  // One light for the point p with normal n (zero: none), from u in [0, 1);
+  // none when no light can reach p.
+  std::optional<LightPick> sample(const Vec3f& p, const Vec3f& n, float u) const;
+  // The probability that sample(p, n, .) returns `light`: the same product,
+  // in the same order, so the two agree to the bit (as MIS needs).
+  float pmf(const Vec3f& p, const Vec3f& n, std::size_t light) const;
+
+ private:
+  struct Node {
+    LightBounds bounds;
+    // A leaf's light, or an inner node's second child (its first is the next node).
+    std::uint32_t childOrLight = 0;
+    bool leaf = false;
+  };
+  struct Entry {
+    std::size_t light;
+    LightBounds bounds;
+  };
+  void build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t trail, int depth);
+  // The probability of stepping to the first child, from the children's
+  // importances (the second's is one minus it).
+  static float firstChildProbability(float importance0, float importance1);
+
+  std::vector<Node> nodes_;  // depth first: a node's first child follows it
+  // For each light, the turns from the root to its leaf: bit d set when the
+  // walk takes the second child at depth d. kNotInTree for lights left out.
+  std::vector<std::uint64_t> trail_;
+  std::vector<std::uint8_t> depth_;  // the leaf's depth (trail bits used)
+  static constexpr std::uint8_t kNotInTree = 255;
+};
+
+}  // namespace lensrt
