@@ -32,11 +32,23 @@ float angleBetween(const Vec3f& a, const Vec3f& b) {
 }  // namespace
 
 float LightBounds::importance(const Vec3f& p, const Vec3f& n) const {
+  return ImportanceBounds(*this).importance(p, n);
+}
+
+ImportanceBounds::ImportanceBounds(const LightBounds& b)
+    : centre(b.bounds.center()),
+      radius2(0.25f * lengthSquared(b.bounds.diagonal())),
+      phi(b.phi),
+      axis(b.axis),
+      cosThetaO(b.cosThetaO),
+      sinThetaO(sinFromCos(b.cosThetaO)),
+      cosThetaE(b.cosThetaE),
+      twoSided(b.twoSided) {}
+
+float ImportanceBounds::importance(const Vec3f& p, const Vec3f& n) const {
   if (!(phi > 0)) return 0;
-  const Vec3f centre = bounds.center();
   const Vec3f fromLight = p - centre;
   const float dist2 = lengthSquared(fromLight);
-  const float radius2 = 0.25f * lengthSquared(bounds.diagonal());
   // A point close to (or inside) a large node must not get an importance
   // that grows without bound; nor may a point at a point light divide by 0.
   const float d2 = std::max({dist2, radius2, 1e-12f});
@@ -56,7 +68,6 @@ float LightBounds::importance(const Vec3f& p, const Vec3f& n) const {
   float cosThetaW = dot(axis, wi);
   if (twoSided) cosThetaW = std::abs(cosThetaW);
   const float sinThetaW = sinFromCos(cosThetaW);
-  const float sinThetaO = sinFromCos(cosThetaO);
   const float cosThetaX = cosOfClampedDifference(sinThetaW, cosThetaW, sinThetaO, cosThetaO);
   const float sinThetaX = sinOfClampedDifference(sinThetaW, cosThetaW, sinThetaO, cosThetaO);
   const float cosThetaP = cosOfClampedDifference(sinThetaX, cosThetaX, sinThetaB, cosThetaB);

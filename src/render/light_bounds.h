@@ -26,6 +26,23 @@ struct LightBounds {
   float importance(const Vec3f& p, const Vec3f& n) const;
 };
 
+// What LightBounds::importance reads, with what it would compute from the
+// box and the cone each time computed once: a light tree evaluates it for
+// both children at every level of every walk. The same arithmetic, so the
+// same bits as LightBounds::importance.
+struct ImportanceBounds {
+  ImportanceBounds() = default;
+  explicit ImportanceBounds(const LightBounds& b);
+  float importance(const Vec3f& p, const Vec3f& n) const;
+
+  Vec3f centre{0, 0, 0};
+  float radius2 = 0;  // the bounding sphere's squared radius
+  float phi = 0;
+  Vec3f axis{0, 0, 1};
+  float cosThetaO = 1, sinThetaO = 0, cosThetaE = 0;
+  bool twoSided = false;
+};
+
 // Bounds of both: the box around both boxes, the power added, the smallest
 // cone found around both cones (not always the smallest possible).
 LightBounds unite(const LightBounds& a, const LightBounds& b);

@@ -47,7 +47,7 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
                       int depth) {
   if (end - begin == 1) {
     const Entry& e = entries[begin];
-    nodes_.push_back({e.bounds, std::uint32_t(e.light), true});
+    nodes_.push_back({ImportanceBounds(e.bounds), std::uint32_t(e.light), true});
     trail_[e.light] = trail;
     depth_[e.light] = std::uint8_t(depth);
     return;
@@ -117,7 +117,7 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
   if (mid == begin || mid == end) mid = begin + (end - begin) / 2;
 
   const std::size_t node = nodes_.size();
-  nodes_.push_back({all, 0, false});
+  nodes_.push_back({ImportanceBounds(all), 0, false});
   build(entries, begin, mid, trail, depth + 1);
   nodes_[node].childOrLight = std::uint32_t(nodes_.size());
   build(entries, mid, end, trail | (std::uint64_t{1} << depth), depth + 1);

@@ -30,8 +30,6 @@ class LightTree {
 
   bool empty() const { return nodes_.empty(); }
   std::size_t nodeCount() const { return nodes_.size(); }
-  // The bounds of all its lights (phi 0 when empty).
-  LightBounds rootBounds() const { return nodes_.empty() ? LightBounds{} : nodes_[0].bounds; }
 
   // One light for the point p with normal n (zero: none), from u in [0, 1);
   // none when no light can reach p.
@@ -42,7 +40,7 @@ class LightTree {
 
  private:
   struct Node {
-    LightBounds bounds;
+    ImportanceBounds bounds;
     // A leaf's light, or an inner node's second child (its first is the next node).
     std::uint32_t childOrLight = 0;
     bool leaf = false;

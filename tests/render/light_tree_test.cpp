@@ -108,7 +108,9 @@ TEST(LightTree, PmfIsPositiveForEveryLightThatCanReachThePointAndEqualsWhatSampl
     double sum = 0;
     for (std::size_t i = 0; i < lights.size(); ++i) {
       const float pmf = tree.pmf(p, n, i);
-      if (lights[i].importance(p, n) > 0) EXPECT_GT(pmf, 0) << "point " << k << " light " << i;
+      if (lights[i].importance(p, n) > 0) {
+        EXPECT_GT(pmf, 0) << "point " << k << " light " << i;
+      }
       sum += pmf;
     }
     ASSERT_LE(sum, 1 + 1e-5) << "point " << k;
@@ -382,7 +384,9 @@ TEST(LightSetTree, PdfTriangleIsTheDensityOfTheSample) {
       for (std::size_t i = 0; i < lights.lightCount(); ++i) sum += lights.pickProbability(i, p, n);
       // The tree may find no light (see above); power picks always find one.
       ASSERT_LE(sum, 1 + 1e-5);
-      if (sampling == LightSampling::Power) ASSERT_NEAR(sum, 1.0, 1e-5);
+      if (sampling == LightSampling::Power) {
+        ASSERT_NEAR(sum, 1.0, 1e-5);
+      }
       for (int s = 0; s < 2000; ++s) {
         const float uPick = u(rng), u1 = u(rng), u2 = u(rng);
         const std::optional<LightSample> ls = lights.sample(p, n, uPick, {u1, u2});
