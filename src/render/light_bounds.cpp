@@ -9,18 +9,7 @@
 namespace lensrt {
 namespace {
 
-float sinFromCos(float c) {
-  return std::sqrt(std::max(0.0f, 1 - c * c));
-}
-
-// cos and sin of max(0, a - b), for angles a and b in [0, pi] given by their
-// sines and cosines (no inverse trigonometry on the hot path).
-float cosOfClampedDifference(float sinA, float cosA, float sinB, float cosB) {
-  return cosA > cosB ? 1.0f : cosA * cosB + sinA * sinB;
-}
-float sinOfClampedDifference(float sinA, float cosA, float sinB, float cosB) {
-  return cosA > cosB ? 0.0f : sinA * cosB - cosA * sinB;
-}
+using lightBoundsDetail::sinFromCos;
 
 float angleBetween(const Vec3f& a, const Vec3f& b) {
   // Accurate for nearly parallel and nearly opposite vectors alike (acos is not).
@@ -32,57 +21,19 @@ float angleBetween(const Vec3f& a, const Vec3f& b) {
 }  // namespace
 
 float LightBounds::importance(const Vec3f& p, const Vec3f& n) const {
-  return ImportanceBounds(*this).importance(p, n);
+  return phi > 0 ? ImportanceBounds(*this).importance(p, n) : 0.0f;
 }
 
 ImportanceBounds::ImportanceBounds(const LightBounds& b)
     : centre(b.bounds.center()),
       radius2(0.25f * lengthSquared(b.bounds.diagonal())),
+      radius(std::sqrt(radius2)),
       phi(b.phi),
       axis(b.axis),
       cosThetaO(b.cosThetaO),
       sinThetaO(sinFromCos(b.cosThetaO)),
       cosThetaE(b.cosThetaE),
       twoSided(b.twoSided) {}
-
-float ImportanceBounds::importance(const Vec3f& p, const Vec3f& n) const {
-  if (!(phi > 0)) return 0;
-  const Vec3f fromLight = p - centre;
-  const float dist2 = lengthSquared(fromLight);
-  // A point close to (or inside) a large node must not get an importance
-  // that grows without bound; nor may a point at a point light divide by 0.
-  const float d2 = std::max({dist2, radius2, 1e-12f});
-  const float dist = std::sqrt(dist2);
-  const Vec3f wi = dist > 0 ? fromLight / dist : Vec3f{0, 0, 1};
-
-  // theta_b: the half-angle of the bounding sphere seen from p (all of the
-  // sphere when p is inside it).
-  float cosThetaB = -1, sinThetaB = 0;
-  if (dist2 > radius2) {
-    const float sin2 = radius2 / dist2;
-    cosThetaB = std::sqrt(std::max(0.0f, 1 - sin2));
-    sinThetaB = std::sqrt(sin2);
-  }
-  // theta_w: from the cone's axis to p; theta_x what the cone of normals
-  // leaves of it; theta_p what the bounding sphere's extent leaves then.
-  float cosThetaW = dot(axis, wi);
-  if (twoSided) cosThetaW = std::abs(cosThetaW);
-  const float sinThetaW = sinFromCos(cosThetaW);
-  const float cosThetaX = cosOfClampedDifference(sinThetaW, cosThetaW, sinThetaO, cosThetaO);
-  const float sinThetaX = sinOfClampedDifference(sinThetaW, cosThetaW, sinThetaO, cosThetaO);
-  const float cosThetaP = cosOfClampedDifference(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
-  if (cosThetaP <= cosThetaE) return 0;
-  float result = phi * cosThetaP / d2;
-  if (n.x != 0 || n.y != 0 || n.z != 0) {
-    // The receiver's cosine, at its most over the sphere; either side of the
-    // surface, as a transmitting surface takes light from both.
-    const float cosThetaI = std::abs(dot(wi, n));
-    const float sinThetaI = sinFromCos(cosThetaI);
-    result *= cosOfClampedDifference(sinThetaI, cosThetaI, sinThetaB, cosThetaB);
-  }
-  // Finite, so that two children's importances always add up.
-  return std::clamp(result, 0.0f, std::numeric_limits<float>::max());
-}
 
 LightBounds unite(const LightBounds& a, const LightBounds& b) {
   if (!(a.phi > 0)) return b;

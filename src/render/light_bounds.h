@@ -6,6 +6,10 @@
 // LightBounds uses it.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "core/bounds.h"
 #include "core/vec.h"
 
@@ -33,10 +37,12 @@ struct LightBounds {
 struct ImportanceBounds {
   ImportanceBounds() = default;
   explicit ImportanceBounds(const LightBounds& b);
+  // LightBounds::importance for phi > 0 (inline: the tree's walk is hot).
   float importance(const Vec3f& p, const Vec3f& n) const;
 
   Vec3f centre{0, 0, 0};
   float radius2 = 0;  // the bounding sphere's squared radius
+  float radius = 0;
   float phi = 0;
   Vec3f axis{0, 0, 1};
   float cosThetaO = 1, sinThetaO = 0, cosThetaE = 0;
@@ -51,5 +57,67 @@ LightBounds unite(const LightBounds& a, const LightBounds& b);
 // the cone and its spread cover, weighted by the cosine falloff. The tree's
 // split cost multiplies it with phi and the box's surface area.
 float orientationMeasure(float cosThetaO, float cosThetaE);
+
+namespace lightBoundsDetail {
+inline float sinFromCos(float c) {
+  return std::sqrt(std::max(0.0f, 1 - c * c));
+}
+// cos(max(0, a - b)) for angles a and b in [0, pi] given by their sines and
+// cosines (no inverse trigonometry on the hot path).
+inline float cosOfClampedDifference(float sinA, float cosA, float sinB, float cosB) {
+  return cosA > cosB ? 1.0f : cosA * cosB + sinA * sinB;
+}
+}  // namespace lightBoundsDetail
+
+inline float ImportanceBounds::importance(const Vec3f& p, const Vec3f& n) const {
+  // pbrt-v4's LightBounds::Importance, arranged to skip square roots and
+  // divisions where an angle is known (a point has no extent; inside a cone
+  // nothing is left of an angle): a tree walk evaluates it twice per level.
+  const Vec3f fromLight = p - centre;
+  const float dist2 = lengthSquared(fromLight);
+  // A point close to (or inside) a large node must not get an importance
+  // that grows without bound; nor may a point at a point light divide by 0.
+  const float d2 = std::max({dist2, radius2, 1e-12f});
+  const float dist = std::sqrt(dist2);
+  const float invDist = dist > 0 ? 1 / dist : 0;
+  const Vec3f wi = dist > 0 ? fromLight * invDist : Vec3f{0, 0, 1};
+
+  // theta_b: the half-angle of the bounding sphere seen from p (all of the
+  // sphere when p is inside it).
+  float cosThetaB = -1, sinThetaB = 0;
+  if (dist2 > radius2) {
+    cosThetaB = 1;
+    if (radius > 0) {
+      sinThetaB = std::min(1.0f, radius * invDist);
+      cosThetaB = lightBoundsDetail::sinFromCos(sinThetaB);
+    }
+  }
+  // theta_w: from the cone's axis to p; theta_x what the cone of normals
+  // leaves of it; theta_p what the bounding sphere's extent leaves then.
+  float cosThetaW = dot(axis, wi);
+  if (twoSided) cosThetaW = std::abs(cosThetaW);
+  float cosThetaX = 1, sinThetaX = 0;
+  if (!(cosThetaW > cosThetaO)) {
+    const float sinThetaW = lightBoundsDetail::sinFromCos(cosThetaW);
+    cosThetaX = cosThetaW * cosThetaO + sinThetaW * sinThetaO;
+    sinThetaX = sinThetaW * cosThetaO - cosThetaW * sinThetaO;
+  }
+  const float cosThetaP =
+      lightBoundsDetail::cosOfClampedDifference(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
+  if (cosThetaP <= cosThetaE) return 0;
+  float result = phi * cosThetaP / d2;
+  if (n.x != 0 || n.y != 0 || n.z != 0) {
+    // The receiver's cosine, at its most over the sphere; either side of the
+    // surface, as a transmitting surface takes light from both.
+    const float cosThetaI = std::abs(dot(wi, n));
+    if (sinThetaB == 0) {
+      if (cosThetaB > 0) result *= cosThetaI;  // a point: its own cosine (inside the sphere: any, 1)
+    } else if (!(cosThetaI > cosThetaB)) {
+      result *= cosThetaI * cosThetaB + lightBoundsDetail::sinFromCos(cosThetaI) * sinThetaB;
+    }
+  }
+  // Finite, so that two children's importances always add up.
+  return std::clamp(result, 0.0f, std::numeric_limits<float>::max());
+}
 
 }  // namespace lensrt

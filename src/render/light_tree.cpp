@@ -40,23 +40,34 @@ LightTree::LightTree(const std::vector<LightBounds>& lights)
   }
   if (entries.empty()) return;
   nodes_.reserve(2 * entries.size() - 1);
+  leafLights_.reserve(entries.size());
+  leafPhi_.reserve(entries.size());
+  leafPhiTotal_.reserve(entries.size());
   build(entries, 0, entries.size(), 0, 0);
 }
 
 void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t trail,
                       int depth) {
-  if (end - begin == 1) {
-    const Entry& e = entries[begin];
-    nodes_.push_back({ImportanceBounds(e.bounds), std::uint32_t(e.light), true});
-    trail_[e.light] = trail;
-    depth_[e.light] = std::uint8_t(depth);
-    return;
-  }
   LightBounds all;
   Bounds3f centroids;
   for (std::size_t k = begin; k < end; ++k) {
     all = unite(all, entries[k].bounds);
     centroids.extend(entries[k].bounds.bounds.center());
+  }
+  if (end - begin == 1 || flatPatch(entries, begin, end, all)) {
+    const std::uint32_t first = std::uint32_t(leafLights_.size());
+    float total = 0;
+    for (std::size_t k = begin; k < end; ++k) {
+      const Entry& e = entries[k];
+      leafLights_.push_back(std::uint32_t(e.light));
+      leafPhi_.push_back(e.bounds.phi);
+      total += e.bounds.phi;
+      trail_[e.light] = trail;
+      depth_[e.light] = std::uint8_t(depth);
+    }
+    leafPhiTotal_.insert(leafPhiTotal_.end(), end - begin, total);
+    nodes_.push_back({ImportanceBounds(all), first, std::uint32_t(end - begin)});
+    return;
   }
   const Vec3f extent = all.bounds.diagonal();
   const float maxExtent = maxComponent(extent);
@@ -117,10 +128,24 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
   if (mid == begin || mid == end) mid = begin + (end - begin) / 2;
 
   const std::size_t node = nodes_.size();
-  nodes_.push_back({ImportanceBounds(all), 0, false});
+  nodes_.push_back({ImportanceBounds(all), 0, 0});
   build(entries, begin, mid, trail, depth + 1);
-  nodes_[node].childOrLight = std::uint32_t(nodes_.size());
+  nodes_[node].childOrFirst = std::uint32_t(nodes_.size());
   build(entries, mid, end, trail | (std::uint64_t{1} << depth), depth + 1);
+}
+
+bool LightTree::flatPatch(const std::vector<Entry>& entries, std::size_t begin, std::size_t end,
+                          const LightBounds& all) {
+  // Normals within about a degree of each other, emitting alike: within
+  // such a patch the importance of one part differs from another's only
+  // close to it, not worth a level of the walk.
+  if (end - begin > kMaxLeafLights || !(all.cosThetaO >= 0.99985f)) return false;
+  for (std::size_t k = begin; k < end; ++k) {
+    const LightBounds& b = entries[k].bounds;
+    if (b.twoSided != all.twoSided || b.cosThetaE != all.cosThetaE || !(b.cosThetaO >= 0.99985f))
+      return false;
+  }
+  return true;
 }
 
 float LightTree::firstChildProbability(float importance0, float importance1) {
@@ -132,8 +157,8 @@ std::optional<LightPick> LightTree::sample(const Vec3f& p, const Vec3f& n, float
   double u = uFloat;  // rescaled at each level; double keeps deep levels stratified
   std::size_t i = 0;
   float pmf = 1;
-  while (!nodes_[i].leaf) {
-    const std::size_t c0 = i + 1, c1 = nodes_[i].childOrLight;
+  while (!nodes_[i].leaf()) {
+    const std::size_t c0 = i + 1, c1 = nodes_[i].childOrFirst;
     const float i0 = nodes_[c0].bounds.importance(p, n), i1 = nodes_[c1].bounds.importance(p, n);
     if (!(i0 > 0) && !(i1 > 0)) return std::nullopt;
     const float p0 = firstChildProbability(i0, i1);
@@ -147,9 +172,20 @@ std::optional<LightPick> LightTree::sample(const Vec3f& p, const Vec3f& n, float
       i = c1;
     }
   }
-  // A tree of one light: the root's own importance decides whether it can reach p.
-  if (i == 0 && !(nodes_[0].bounds.importance(p, n) > 0)) return std::nullopt;
-  return LightPick{nodes_[i].childOrLight, pmf};
+  // Within the leaf by power. (A tree that is one leaf skips the walk and
+  // any importance: a light it picks that cannot reach p gives nothing.)
+  const Node& leaf = nodes_[i];
+  std::size_t k = leaf.childOrFirst;
+  if (leaf.count > 1) {
+    // u's place among the leaf's lights by their phi (the last takes what
+    // rounding leaves).
+    const double target = u * double(leafPhiTotal_[k]);
+    const std::size_t last = k + leaf.count - 1;
+    double below = 0;
+    while (k < last && !(target < below + double(leafPhi_[k]))) below += double(leafPhi_[k++]);
+    pmf *= leafPhi_[k] / leafPhiTotal_[k];
+  }
+  return LightPick{leafLights_[k], pmf};
 }
 
 float LightTree::pmf(const Vec3f& p, const Vec3f& n, std::size_t light) const {
@@ -157,8 +193,8 @@ float LightTree::pmf(const Vec3f& p, const Vec3f& n, std::size_t light) const {
   const std::uint64_t trail = trail_[light];
   std::size_t i = 0;
   float pmf = 1;
-  for (int depth = 0; !nodes_[i].leaf; ++depth) {
-    const std::size_t c0 = i + 1, c1 = nodes_[i].childOrLight;
+  for (int depth = 0; !nodes_[i].leaf(); ++depth) {
+    const std::size_t c0 = i + 1, c1 = nodes_[i].childOrFirst;
     const float i0 = nodes_[c0].bounds.importance(p, n), i1 = nodes_[c1].bounds.importance(p, n);
     if (!(i0 > 0) && !(i1 > 0)) return 0;
     const float p0 = firstChildProbability(i0, i1);
@@ -170,7 +206,14 @@ float LightTree::pmf(const Vec3f& p, const Vec3f& n, std::size_t light) const {
       i = c0;
     }
   }
-  if (i == 0 && !(nodes_[0].bounds.importance(p, n) > 0)) return 0;
+  if (nodes_[i].count > 1) {
+    const std::size_t first = nodes_[i].childOrFirst;
+    const auto at =
+        std::find(leafLights_.begin() + std::ptrdiff_t(first),
+                  leafLights_.begin() + std::ptrdiff_t(first + nodes_[i].count), std::uint32_t(light));
+    const std::size_t k = std::size_t(at - leafLights_.begin());
+    pmf *= leafPhi_[k] / leafPhiTotal_[k];
+  }
   return pmf;
 }
 

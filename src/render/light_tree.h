@@ -3,7 +3,10 @@
 // Estevez and Kulla 2018; pbrt-v4's BVHLightSampler). Each inner node steps
 // to a child with probability proportional to the child's importance at the
 // point, so near, bright, facing lights are chosen more often than the power
-// alone would choose them.
+// alone would choose them. A leaf holds one light, or the few lights of one
+// flat patch (the two triangles of a quad light: coplanar, facing one way),
+// chosen among by power: a walk one level shorter, and none at all for a
+// scene whose only light is such a patch.
 #pragma once
 
 #include <cstddef>
@@ -30,6 +33,8 @@ class LightTree {
 
   bool empty() const { return nodes_.empty(); }
   std::size_t nodeCount() const { return nodes_.size(); }
+  // At most this many lights share a leaf, and only those of one flat patch.
+  static constexpr std::size_t kMaxLeafLights = 4;
 
   // One light for the point p with normal n (zero: none), from u in [0, 1);
   // none when no light can reach p.
@@ -41,9 +46,11 @@ class LightTree {
  private:
   struct Node {
     ImportanceBounds bounds;
-    // A leaf's light, or an inner node's second child (its first is the next node).
-    std::uint32_t childOrLight = 0;
-    bool leaf = false;
+    // A leaf's first entry in leafLights_, or an inner node's second child
+    // (its first is the next node).
+    std::uint32_t childOrFirst = 0;
+    std::uint32_t count = 0;  // a leaf's lights; 0 for an inner node
+    bool leaf() const { return count > 0; }
   };
   struct Entry {
     std::size_t light;
@@ -53,8 +60,16 @@ class LightTree {
   // The probability of stepping to the first child, from the children's
   // importances (the second's is one minus it).
   static float firstChildProbability(float importance0, float importance1);
+  // Whether entries [begin, end) form one flat patch a leaf may hold.
+  static bool flatPatch(const std::vector<Entry>& entries, std::size_t begin, std::size_t end,
+                        const LightBounds& all);
 
   std::vector<Node> nodes_;  // depth first: a node's first child follows it
+  // The lights of the leaves, each leaf's together, with their phi and the
+  // leaf's total (in order: the same float sums in sample() and pmf()).
+  std::vector<std::uint32_t> leafLights_;
+  std::vector<float> leafPhi_;
+  std::vector<float> leafPhiTotal_;  // per entry of leafLights_: its leaf's total
   // For each light, the turns from the root to its leaf: bit d set when the
   // walk takes the second child at depth d. kNotInTree for lights left out.
   std::vector<std::uint64_t> trail_;

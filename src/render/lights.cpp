@@ -243,8 +243,9 @@ std::optional<LightSample> LightSet::sample(const Vec3f& p, const Vec3f& n, floa
     i = pick_.sample(uPick);
     pickPdf = pick_.probability(i);
   } else {
-    float uTree = 0;
-    const std::size_t slot = top_.sample(uPick, &uTree);
+    // Without directional lights or an environment the tree is all there is.
+    float uTree = uPick;
+    const std::size_t slot = outside_.empty() ? 0 : top_.sample(uPick, &uTree);
     if (slot < outside_.size()) {
       i = outside_[slot];
       pickPdf = top_.probability(slot);
