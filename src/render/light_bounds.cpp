@@ -46,6 +46,28 @@ LightBounds unite(const LightBounds& a, const LightBounds& b) {
   u.twoSided = a.twoSided || b.twoSided;
 
   // The cones: one inside the other, else the cone from a's far edge to b's.
+  // First the cases without trigonometry (a tree's build unites often).
+  if (a.cosThetaO <= -1 || b.cosThetaO <= -1) {
+    u.axis = a.cosThetaO <= -1 ? a.axis : b.axis;
+    u.cosThetaO = -1;
+    return u;
+  }
+  if (a.axis == b.axis) {
+    u.axis = a.axis;
+    u.cosThetaO = std::min(a.cosThetaO, b.cosThetaO);
+    return u;
+  }
+  // One direction (a triangle's normal) inside the other cone.
+  if (b.cosThetaO >= 1 && dot(a.axis, b.axis) >= a.cosThetaO) {
+    u.axis = a.axis;
+    u.cosThetaO = a.cosThetaO;
+    return u;
+  }
+  if (a.cosThetaO >= 1 && dot(a.axis, b.axis) >= b.cosThetaO) {
+    u.axis = b.axis;
+    u.cosThetaO = b.cosThetaO;
+    return u;
+  }
   const float thetaA = std::acos(std::clamp(a.cosThetaO, -1.0f, 1.0f));
   const float thetaB = std::acos(std::clamp(b.cosThetaO, -1.0f, 1.0f));
   const float thetaD = angleBetween(a.axis, b.axis);
@@ -77,6 +99,10 @@ LightBounds unite(const LightBounds& a, const LightBounds& b) {
 }
 
 float orientationMeasure(float cosThetaO, float cosThetaE) {
+  // The two common cases in closed form (a build evaluates this often): all
+  // directions, 4 pi; one normal with a Lambertian spread, pi.
+  if (cosThetaO <= -1) return 4 * kPiF;
+  if (cosThetaO >= 1 && cosThetaE == 0) return kPiF;
   const float thetaO = std::acos(std::clamp(cosThetaO, -1.0f, 1.0f));
   const float thetaE = std::acos(std::clamp(cosThetaE, -1.0f, 1.0f));
   const float thetaW = std::min(thetaO + thetaE, kPiF);

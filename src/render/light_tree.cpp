@@ -12,6 +12,8 @@ constexpr int kBuckets = 12;
 // Below this depth every split halves its lights (sorted along the widest
 // axis), so that a trail of 64 bits holds any leaf's path for up to 2^32 lights.
 constexpr int kBalancedFromDepth = 30;
+// Nodes of more lights than this try only their widest axis for a cut.
+constexpr std::size_t kAllAxesUpTo = 1024;
 constexpr double kOneMinusEpsilon = 1.0 - 0x1p-53;
 
 float surfaceArea(const Bounds3f& b) {
@@ -88,8 +90,13 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
 
   float bestCost = std::numeric_limits<float>::infinity();
   int bestDim = -1, bestBucket = -1;
+  // Large nodes try their widest axis alone (uniting cones costs the build
+  // most of its time; a large node's best cut is nearly always across it).
+  const Vec3f spread = centroids.diagonal();
+  const int widest = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
   for (int dim = 0; dim < 3 && depth < kBalancedFromDepth; ++dim) {
     if (!(centroids.hi[dim] > centroids.lo[dim])) continue;
+    if (end - begin > kAllAxesUpTo && dim != widest) continue;
     std::array<LightBounds, kBuckets> buckets{};
     for (std::size_t k = begin; k < end; ++k) {
       LightBounds& b = buckets[std::size_t(bucketOf(entries[k], dim))];
@@ -119,8 +126,7 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
                       entries.begin());
   } else {
     // No split by cost (all at one spot, or deep): halve along the widest axis.
-    const Vec3f spread = centroids.diagonal();
-    const int dim = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+    const int dim = widest;
     std::stable_sort(first, last, [dim](const Entry& a, const Entry& b) {
       return a.bounds.bounds.center()[dim] < b.bounds.bounds.center()[dim];
     });
