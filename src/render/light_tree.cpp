@@ -33,18 +33,23 @@ float maxComponent(const Vec3f& v) {
 
 }  // namespace
 
-LightTree::LightTree(const std::vector<LightBounds>& lights)
-    : trail_(lights.size(), 0), depth_(lights.size(), kNotInTree) {
+LightTree::LightTree(const std::vector<LightBounds>& lights, const std::vector<std::int32_t>& emitter)
+    : slot_(lights.size(), 0), trail_(lights.size(), 0), depth_(lights.size(), kNotInTree) {
   std::vector<Entry> entries;
+  Bounds3f all;
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const LightBounds& b = lights[i];
-    if (b.phi > 0 && std::isfinite(b.phi) && !b.bounds.empty()) entries.push_back({i, b});
+    if (!(b.phi > 0) || !std::isfinite(b.phi) || b.bounds.empty()) continue;
+    entries.push_back({i, b, emitter.size() == lights.size() ? emitter[i] : -1});
+    all.extend(b.bounds);
   }
   if (entries.empty()) return;
+  smallRadius_ = kSmallEmitter * 0.5f * length(all.diagonal());
   nodes_.reserve(2 * entries.size() - 1);
   leafLights_.reserve(entries.size());
   leafPhi_.reserve(entries.size());
   leafPhiTotal_.reserve(entries.size());
+  leafCdf_.reserve(entries.size());
   build(entries, 0, entries.size(), 0, 0);
 }
 
@@ -56,14 +61,18 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
     all = unite(all, entries[k].bounds);
     centroids.extend(entries[k].bounds.bounds.center());
   }
-  if (end - begin == 1 || flatPatch(entries, begin, end, all)) {
+  if (end - begin == 1 || flatPatch(entries, begin, end, all) || smallEmitter(entries, begin, end, all)) {
     const std::uint32_t first = std::uint32_t(leafLights_.size());
     float total = 0;
+    double cdf = 0;
     for (std::size_t k = begin; k < end; ++k) {
       const Entry& e = entries[k];
+      slot_[e.light] = std::uint32_t(leafLights_.size());
       leafLights_.push_back(std::uint32_t(e.light));
       leafPhi_.push_back(e.bounds.phi);
       total += e.bounds.phi;
+      cdf += double(e.bounds.phi);
+      leafCdf_.push_back(cdf);
       trail_[e.light] = trail;
       depth_[e.light] = std::uint8_t(depth);
     }
@@ -154,6 +163,15 @@ bool LightTree::flatPatch(const std::vector<Entry>& entries, std::size_t begin, 
   return true;
 }
 
+bool LightTree::smallEmitter(const std::vector<Entry>& entries, std::size_t begin, std::size_t end,
+                             const LightBounds& all) const {
+  const std::int32_t id = entries[begin].emitter;
+  if (id < 0 || !(0.5f * length(all.bounds.diagonal()) <= smallRadius_)) return false;
+  for (std::size_t k = begin; k < end; ++k)
+    if (entries[k].emitter != id) return false;
+  return true;
+}
+
 float LightTree::firstChildProbability(float importance0, float importance1) {
   return float(double(importance0) / (double(importance0) + double(importance1)));
 }
@@ -183,12 +201,9 @@ std::optional<LightPick> LightTree::sample(const Vec3f& p, const Vec3f& n, float
   const Node& leaf = nodes_[i];
   std::size_t k = leaf.childOrFirst;
   if (leaf.count > 1) {
-    // u's place among the leaf's lights by their phi (the last takes what
-    // rounding leaves).
-    const double target = u * double(leafPhiTotal_[k]);
-    const std::size_t last = k + leaf.count - 1;
-    double below = 0;
-    while (k < last && !(target < below + double(leafPhi_[k]))) below += double(leafPhi_[k++]);
+    // u's place among the leaf's lights by their phi.
+    const auto first = leafCdf_.begin() + std::ptrdiff_t(k), last = first + std::ptrdiff_t(leaf.count - 1);
+    k = std::size_t(std::upper_bound(first, last, u * *last) - leafCdf_.begin());
     pmf *= leafPhi_[k] / leafPhiTotal_[k];
   }
   return LightPick{leafLights_[k], pmf};
@@ -213,11 +228,7 @@ float LightTree::pmf(const Vec3f& p, const Vec3f& n, std::size_t light) const {
     }
   }
   if (nodes_[i].count > 1) {
-    const std::size_t first = nodes_[i].childOrFirst;
-    const auto at =
-        std::find(leafLights_.begin() + std::ptrdiff_t(first),
-                  leafLights_.begin() + std::ptrdiff_t(first + nodes_[i].count), std::uint32_t(light));
-    const std::size_t k = std::size_t(at - leafLights_.begin());
+    const std::size_t k = slot_[light];
     pmf *= leafPhi_[k] / leafPhiTotal_[k];
   }
   return pmf;

@@ -114,6 +114,7 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
       }
       tri.material = mesh.material;
       tri.mesh = inst.mesh;
+      tri.instance = int(k);
       tri.prim = static_cast<unsigned>(t);
       triangles_.push_back(tri);
       power.push_back(std::isfinite(tri.area) ? kPiF * tri.area * le : 0.0f);
@@ -151,7 +152,8 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
 
 void LightSet::buildTree(const std::vector<float>& power) {
   const std::vector<PunctualLight>& punctual = materials_->scene().lights;
-  std::vector<LightBounds> lights(power.size());  // phi 0: not in the tree
+  std::vector<LightBounds> lights(power.size());        // phi 0: not in the tree
+  std::vector<std::int32_t> emitter(power.size(), -1);  // a triangle's instance
   std::vector<float> topWeights;
   topSlot_.assign(power.size(), std::size_t(-1));
   const auto outside = [&](std::size_t i) {
@@ -181,12 +183,13 @@ void LightSet::buildTree(const std::vector<float>& power) {
     b.cosThetaE = 0;  // Lambertian: to the horizon
     b.twoSided = materials_->material(tri.material).doubleSided;
     b.phi = b.twoSided ? 0.5f * p : p;  // what one side emits, as one side is what a point sees
+    emitter[firstTriangle_ + t] = tri.instance;
     treePower += p;
   }
   for (std::size_t i = environmentIndex_; i < power.size(); ++i) outside(i);
   topWeights.push_back(float(treePower));
   top_ = Distribution1D(topWeights);
-  tree_ = LightTree(lights);
+  tree_ = LightTree(lights, emitter);
 }
 
 float LightSet::pickProbability(std::size_t i, const Vec3f& p, const Vec3f& n) const {

@@ -76,6 +76,7 @@ class LightSet {
     float area;
     int material;
     int mesh;  // for the coverage of MASK and BLEND emitters
+    int instance;
     unsigned prim;
   };
   std::optional<LightSample> sampleTriangle(const Triangle& t, const Vec3f& p, const Vec2f& u) const;

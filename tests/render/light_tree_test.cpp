@@ -268,6 +268,47 @@ TEST(LightTree, AFlatPatchSharesALeafAndIsPickedWithinByPower) {
   // light when u < 0.5) while the pmf says by power: p-value 0.
 }
 
+// A small emitter of many triangles (a 5 cm ball of 300, facing every way)
+// among 50 point lights over 20 m: its triangles share one leaf, picked
+// within it by power, and sample() and pmf() still agree.
+TEST(LightTree, ASmallEmitterOfManyTrianglesIsOneLeaf) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<float> u(0, 1);
+  std::vector<LightBounds> lights;
+  std::vector<std::int32_t> emitter;
+  for (int i = 0; i < 50; ++i) {
+    LightBounds b;
+    b.bounds.extend(Vec3f{20 * u(rng) - 10, 3 * u(rng), 20 * u(rng) - 10});
+    b.phi = 1;
+    b.cosThetaO = -1;
+    lights.push_back(b);
+    emitter.push_back(-1);
+  }
+  const Vec3f ball{1, 2, -1};
+  for (int t = 0; t < 300; ++t) {
+    LightBounds b;
+    const Vec3f normal = randomUnit(rng);
+    b.bounds.extend(ball + normal * 0.05f);
+    b.bounds.extend(ball + normal * 0.05f + randomUnit(rng) * 0.01f);
+    b.axis = normal;
+    b.phi = 0.01f + 0.02f * u(rng);
+    lights.push_back(b);
+    emitter.push_back(7);
+  }
+  const LightTree tree(lights, emitter);
+  EXPECT_EQ(tree.nodeCount(), 2 * 51 - 1);
+  const Vec3f p{0, 0, 0}, n{0, 1, 0};
+  // Within the leaf by power: any two of its triangles that can be picked.
+  const float a = tree.pmf(p, n, 50), b = tree.pmf(p, n, 51);
+  ASSERT_GT(a, 0);
+  EXPECT_NEAR(a / b, lights[50].phi / lights[51].phi, 1e-5);
+  for (int s = 0; s < 20000; ++s) {
+    const std::optional<LightPick> pick = tree.sample(p, n, u(rng));
+    ASSERT_TRUE(pick);
+    ASSERT_EQ(pick->pmf, tree.pmf(p, n, pick->light));
+  }
+}
+
 // One quad light (a Cornell box's): one leaf, no walk, picked by power.
 TEST(LightTree, OneQuadLightIsOneLeaf) {
   std::vector<LightBounds> lights(2);
