@@ -264,8 +264,8 @@ TEST(LightTree, AFlatPatchSharesALeafAndIsPickedWithinByPower) {
     ++counts[pick->light];
   }
   EXPECT_GT(pickChiSquarePValue(counts, none, pmf, kSamples), 1e-3);
-  // Injected bug (measured): the pick within a leaf by u alone (the first
-  // light when u < 0.5) while the pmf says by power: p-value 0.
+  // Injected bug (measured): the pick within a leaf at u^2 of its cdf
+  // instead of u, while the pmf says by power: p-value 0.
 }
 
 // A small emitter of many triangles (a 5 cm ball of 300, facing every way)
@@ -598,8 +598,8 @@ TEST(LightSetTree, FurnaceRoomOfManyEmittersRendersItsClosedForm) {
       << "tree " << estimates[0].mean << ", power " << estimates[1].mean;
   // Injected bug (measured): pdfTriangle taking the tree's pmf without the
   // normal (n = 0) while sample() uses it, so that the MIS weights no longer
-  // add up to 1: the tree's mean 1.8833 for 1.875, 9.1 standard errors off
-  // (0.00091), and 5.7 from power's mean (1.8757; the right tree gives 1.8752).
+  // add up to 1: the tree's mean 1.8802 for 1.875, 5.7 standard errors off
+  // (0.00091), and 3.4 from power's 1.8757 (the right tree gives 1.8749).
 }
 
 }  // namespace
