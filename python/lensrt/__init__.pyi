@@ -109,6 +109,7 @@ class Scene:
         env_rotate: float = 0.0,
         env_intensity: float = 1.0,
         max_depth: int = 8,
+        light_sampler: str = "tree",
         camera_node: str | int | None = None,
         camera_to_world: npt.ArrayLike | None = None,
         threads: int = 0,

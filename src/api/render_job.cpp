@@ -110,7 +110,7 @@ RenderJob::RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& opt
   environment_ = std::make_unique<Environment>(makeEnvironment(options.environment));
   const RenderScene& geometry = scene_->geometry();
   const MaterialTable& materials = scene_->materials();
-  lights_ = std::make_unique<LightSet>(materials, *environment_, geometry.bounds());
+  lights_ = std::make_unique<LightSet>(materials, *environment_, geometry.bounds(), options.lightSampling);
   // Most glTF files leave the lighting to the viewer, which shows them under
   // a default environment; so does lensrt, rather than render black. A scene
   // whose own emitters are token ones (a few glowing parts) gets the sky too.
@@ -135,7 +135,8 @@ RenderJob::RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& opt
     }
     if (!why.empty()) {
       *environment_ = defaultEnvironment(options.environment);
-      lights_ = std::make_unique<LightSet>(materials, *environment_, geometry.bounds());
+      lights_ =
+          std::make_unique<LightSet>(materials, *environment_, geometry.bounds(), options.lightSampling);
       defaultEnvironment_ = true;
       if (!lights_->empty() && !options.quiet)
         warnings.warn(fmt::format(
@@ -280,9 +281,9 @@ ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& se
       {"lensrt:camera", camera.describe()},
       {"lensrt:settings",
        fmt::format(
-           "res={}x{} max_depth={} environment={} channels={} transport={}{}{}{}", width_, height_,
-           frame_.maxDepth, environment_->describe(), aovs, transportDescription(settings.filmResponse.get()),
-           adaptive,
+           "res={}x{} max_depth={} light_sampler={} environment={} channels={} transport={}{}{}{}", width_,
+           height_, frame_.maxDepth, lightSamplingName(frame_.lightSampling), environment_->describe(), aovs,
+           transportDescription(settings.filmResponse.get()), adaptive,
            scene_->geometry().desc().pose.empty() ? std::string() : " " + scene_->geometry().desc().pose,
            settings.timing ? " shutter=" + settings.timing->describe() : std::string())},
       {"lensrt:seed", std::to_string(settings.seed)},

@@ -30,7 +30,8 @@ struct FrameOptions {
   std::optional<Resolution> resolution;      // none: 640 wide, height from the camera's aspect
   EnvironmentSpec environment;
   int maxDepth = 8;
-  bool quiet = false;  // no "no lights" warning
+  LightSampling lightSampling = LightSampling::Tree;  // --light-sampler
+  bool quiet = false;                                 // no "no lights" warning
 };
 
 // A scene file and its frame, as `lensrt render` and `lensrt compare` take them.

@@ -286,6 +286,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
          settings.adaptive ? nlohmann::json(settings.adaptive->minSamples) : nlohmann::json(nullptr)},
         {"seed", args.seed},
         {"max_depth", args.frame.maxDepth},
+        {"light_sampler", args.frame.lightSampler},
         {"environment", job.environmentDescription()}}},
       {"lens", lens},
       {"heatmap_scale", heatmap.scaleMax},
@@ -336,6 +337,7 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
   cmd->add_option("--camera-node", args->frame.cameraNode, "camera to render: a glTF node name or index");
   cmd->add_option("--scene-index", args->frame.sceneIndex, "which glTF scene to render (0-based)")
       ->check(CLI::Range(-1, 1 << 20));
+  addLightSamplerOption(*cmd, args->frame);
   addEnvironmentOptions(*cmd, args->frame.environment);
   addSceneAccessOptions(*cmd, args->frame.access);
   addAnimationOptions(*cmd, args->frame);

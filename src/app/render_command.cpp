@@ -161,6 +161,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
          "--scene-index", args->frame.sceneIndex,
          "which glTF scene to render (0-based; default: the file's default scene), e.g. --scene-index 1")
       ->check(integerIn(0, 1 << 20, "0-based"));
+  addLightSamplerOption(*cmd, args->frame);
   addEnvironmentOptions(*cmd, args->frame.environment);
   addSceneAccessOptions(*cmd, args->frame.access);
   addAnimationOptions(*cmd, args->frame);

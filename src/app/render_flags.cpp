@@ -13,12 +13,29 @@ SceneOptions sceneOptions(const SceneArgs& args, bool quiet) {
   if (!args.resolution.empty()) o.resolution = parseResolution(args.resolution);
   o.environment = environmentSpec(args.environment);
   o.maxDepth = args.maxDepth;
+  const std::optional<LightSampling> sampling = parseLightSampling(args.lightSampler);
+  if (!sampling)
+    throw UsageError("--light-sampler", "expected tree or power, got '" + args.lightSampler + "'");
+  o.lightSampling = *sampling;
   o.quiet = quiet;
   o.limits = sceneReadLimits(args.access);
   if (args.time && args.frame) throw UsageError("--frame", "give --time SECONDS or --frame N, not both");
   o.time.seconds = args.frame ? double(*args.frame) / args.fps : args.time.value_or(0.0);
   o.time.animation = args.animation;
   return o;
+}
+
+void addLightSamplerOption(CLI::App& cmd, SceneArgs& args) {
+  cmd.add_option("--light-sampler", args.lightSampler,
+                 "how next-event estimation picks a light: tree (a light tree, by what each light can give "
+                 "the shading point: for many lights) or power (by power alone, wherever the point), e.g. "
+                 "--light-sampler power")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            return parseLightSampling(text) ? "" : "expected tree or power, got '" + text + "'";
+          },
+          "tree|power"))
+      ->capture_default_str();
 }
 
 void addAnimationOptions(CLI::App& cmd, SceneArgs& args) {

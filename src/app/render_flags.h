@@ -17,6 +17,7 @@ struct SceneArgs {
   std::string scene;
   std::string resolution;  // --res; empty: the default
   int maxDepth = 8;
+  std::string lightSampler = "tree";  // --light-sampler
   std::string cameraNode;
   int sceneIndex = -1;
   EnvironmentArgs environment;
@@ -33,6 +34,8 @@ SceneOptions sceneOptions(const SceneArgs& args, bool quiet);
 void addEnvironmentOptions(CLI::App& command, EnvironmentArgs& args);
 // --allow-external-files (or LENSRT_ALLOW_EXTERNAL_FILES=1) and --max-texture-memory MIB.
 void addSceneAccessOptions(CLI::App& command, SceneAccessArgs& args);
+// --light-sampler tree|power.
+void addLightSamplerOption(CLI::App& command, SceneArgs& args);
 // --time SECONDS, --frame N, --fps F and --animation NAME|INDEX.
 void addAnimationOptions(CLI::App& command, SceneArgs& args);
 

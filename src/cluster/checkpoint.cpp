@@ -33,12 +33,13 @@ FilmState readCheckpoint(const fs::path& image, const ImageMetadata& identity, c
   ImageMetadata meta;
   readImage(image, &meta);
   const std::string file = image.string();
-  if (const std::string diff = renderIdentityDifference(meta, identity); !diff.empty())
-    throw InputError(file, "cannot resume another render: " + diff);
+  // Not a checkpoint at all says more than which of its settings differ.
   const auto digest = meta.find("lensrt:sums_sha256");
   if (digest == meta.end())
     throw InputError(
         file, "has no running sums to resume from (render with --checkpoint to make a resumable image)");
+  if (const std::string diff = renderIdentityDifference(meta, identity); !diff.empty())
+    throw InputError(file, "cannot resume another render: " + diff);
   const fs::path sums = checkpointSumsFile(image);
   std::ifstream in(sums, std::ios::binary);
   if (!in) throw InputError(sums.string(), "cannot read the checkpoint's running sums");

@@ -192,7 +192,8 @@ class PyScene {
                                                    "sensor_params",
                                                    "raw",
                                                    "cfa",
-                                                   "progress"};
+                                                   "progress",
+                                                   "light_sampler"};
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
       if (std::find(known.begin(), known.end(), name) == known.end())
@@ -272,6 +273,12 @@ class PyScene {
     f.environment = environmentSpec(env);
     if (const py::object v = get("max_depth"); !v.is_none())
       f.maxDepth = int(toInteger(v, "max_depth", 0, 1024));
+    if (const py::object v = get("light_sampler"); !v.is_none()) {
+      const std::string name = toText(v, "light_sampler");
+      const std::optional<LightSampling> sampling = parseLightSampling(name);
+      if (!sampling) throw UsageError("--light-sampler", "expected tree or power, got '" + name + "'");
+      f.lightSampling = *sampling;
+    }
 
     RenderSettings& s = request.settings;
     if (const py::object v = get("spp"); !v.is_none())
@@ -418,7 +425,7 @@ index to play one of them (None: all).)doc")
            R"doc(render(camera="pinhole", lens=None, fstop=None, focus="auto", focus_pixel=None,
        sensor="full-frame", res=None, spp=16, noise_threshold=None, min_spp=None, seed=0,
        aov=(), env=None, env_rotate=0,
-       env_intensity=1, max_depth=8, camera_node=None, camera_to_world=None, threads=0,
+       env_intensity=1, max_depth=8, light_sampler="tree", camera_node=None, camera_to_world=None, threads=0,
        crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
        exposure="normalized", shutter=None, shutter_curve="box", rolling_shutter=None,
        readout="top-down", iso=None, dispersion="on", coatings=None,
@@ -450,6 +457,8 @@ settings and seed. Keywords only, each the flag of the same name:
     "constant:R,G,B", a number V (constant radiance in W/(sr m^2)), or a lat-long
     .exr/.hdr map. env_rotate: degrees about +Y. env_intensity: a scale.
   max_depth: scattering events per path. threads: 0 for all cores.
+  light_sampler: "tree" (a light tree: by what each light can give the shading
+    point) or "power" (by power alone), how next-event estimation picks a light.
   camera_node: glTF node name or index of the camera (None: the first one).
   camera_to_world: a 4 x 4 rigid pose (metres) replacing that camera's; the
     camera looks down its -Z axis with +Y up (glTF).

@@ -102,7 +102,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
   Spectrum beta = lambda.liveLanes();
   Ray ray = cameraRay;
   float prevBsdfPdf = 0;
-  Vec3f prevPosition;
+  Vec3f prevPosition, prevNormal;  // the last scattering vertex, for the light pick's MIS density
   // Absorption coefficient of the medium the path is in (KHR_materials_volume):
   // set when it refracts into a volume through a front face, cleared when it
   // leaves through a back face. Camera paths start in air.
@@ -143,7 +143,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
       float w = 1.0f;
       if (depth > 0)
         w = powerHeuristic(prevBsdfPdf, lights_.pdfTriangle(hit->instance, hit->primitive, prevPosition,
-                                                            hit->position, hit->geometricNormal));
+                                                            prevNormal, hit->position, hit->geometricNormal));
       radiance += beta * sp.emission * w;
     }
     if (depth >= settings_.maxDepth) break;
@@ -162,7 +162,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
 
     // Next-event estimation.
     if (!lights_.empty()) {
-      const std::optional<LightSample> ls = lights_.sample(hit->position, u.get1D(0), u.get2D(1));
+      const std::optional<LightSample> ls = lights_.sample(hit->position, sp.frame.n, u.get1D(0), u.get2D(1));
       if (ls && (dot(ls->wi, ng) > 0 || bsdf.transmits()) && consistent(ls->wi)) {
         const BsdfValue bv = bsdf.evalPdf(wo, ls->wi);
         const Spectrum f = bv.f * std::abs(dot(ls->wi, sp.frame.n));
@@ -200,6 +200,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
     beta *= bs->f * (std::abs(dot(wi, sp.frame.n)) / bs->pdf);
     prevBsdfPdf = bs->pdf;
     prevPosition = hit->position;
+    prevNormal = sp.frame.n;
     ray = Ray{originToward(wi), wi, 0.0f, kInfinityF, ray.time};
     if (transmitted) {
       const Material& m = materials_.material(hit->material);

@@ -25,8 +25,44 @@ float rangeWindow(const PunctualLight& light, float distance) {
   return w * w;
 }
 
-LightSet::LightSet(const MaterialTable& materials, const Environment& environment, const Bounds3f& bounds)
-    : materials_(&materials), environment_(&environment) {
+const char* lightSamplingName(LightSampling sampling) {
+  return sampling == LightSampling::Tree ? "tree" : "power";
+}
+
+std::optional<LightSampling> parseLightSampling(std::string_view name) {
+  if (name == "tree") return LightSampling::Tree;
+  if (name == "power") return LightSampling::Power;
+  return std::nullopt;
+}
+
+namespace {
+
+// Where and how a point or spot light shines, for the light tree. phi is
+// 4 pi I for both: the cone, not phi, says where a spot does not reach.
+LightBounds punctualBounds(const PunctualLight& l) {
+  LightBounds b;
+  b.bounds.extend(l.position);
+  b.phi = 4 * kPiF * std::max(0.0f, luminance(l.intensity));
+  if (l.type == PunctualLight::Type::Spot) {
+    // Full inside the inner cone, nothing past the outer one; a milliradian
+    // more, so that rounding never calls a lit point unreachable.
+    const float outer = std::clamp(l.outerConeAngle, 0.0f, kPiF);
+    const float inner = std::clamp(l.innerConeAngle, 0.0f, outer);
+    b.axis = l.direction;
+    b.cosThetaO = std::cos(inner);
+    b.cosThetaE = std::cos(std::min(outer - inner + 1e-3f, kPiF));
+  } else {
+    b.cosThetaO = -1;  // every direction
+    b.cosThetaE = 0;
+  }
+  return b;
+}
+
+}  // namespace
+
+LightSet::LightSet(const MaterialTable& materials, const Environment& environment, const Bounds3f& bounds,
+                   LightSampling sampling)
+    : materials_(&materials), environment_(&environment), sampling_(sampling) {
   const SceneDesc& scene = materials.scene();
   instanceFirstTriangle_.assign(scene.instances.size(), -1);
   std::vector<float> power;
@@ -78,6 +114,7 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
       }
       tri.material = mesh.material;
       tri.mesh = inst.mesh;
+      tri.instance = int(k);
       tri.prim = static_cast<unsigned>(t);
       triangles_.push_back(tri);
       power.push_back(std::isfinite(tri.area) ? kPiF * tri.area * le : 0.0f);
@@ -90,6 +127,7 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
     power.push_back(kPiF * kPiF * radius * radius * environment.averageLuminance());
   }
   pick_ = Distribution1D(power);
+  if (sampling_ == LightSampling::Tree) buildTree(power);
 
   // The dominant light's colour: each punctual light, each emissive
   // material's triangles together, the environment, by the power above.
@@ -110,6 +148,55 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
       best = p;
       dominantColour_ = colour;
     }
+}
+
+void LightSet::buildTree(const std::vector<float>& power) {
+  const std::vector<PunctualLight>& punctual = materials_->scene().lights;
+  std::vector<LightBounds> lights(power.size());        // phi 0: not in the tree
+  std::vector<std::int32_t> emitter(power.size(), -1);  // a triangle's instance
+  std::vector<float> topWeights;
+  topSlot_.assign(power.size(), std::size_t(-1));
+  const auto outside = [&](std::size_t i) {
+    topSlot_[i] = outside_.size();
+    outside_.push_back(i);
+    topWeights.push_back(power[i]);
+  };
+  double treePower = 0;
+  for (std::size_t i = 0; i < firstTriangle_; ++i) {
+    if (punctual[i].type == PunctualLight::Type::Directional) {
+      outside(i);
+    } else if (power[i] > 0) {
+      lights[i] = punctualBounds(punctual[i]);
+      treePower += power[i];
+    }
+  }
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    const float p = power[firstTriangle_ + t];
+    if (!(p > 0)) continue;
+    const Triangle& tri = triangles_[t];
+    LightBounds& b = lights[firstTriangle_ + t];
+    b.bounds.extend(tri.p0);
+    b.bounds.extend(tri.p0 + tri.e1);
+    b.bounds.extend(tri.p0 + tri.e2);
+    b.axis = tri.normal;
+    b.cosThetaO = 1;  // one normal
+    b.cosThetaE = 0;  // Lambertian: to the horizon
+    b.twoSided = materials_->material(tri.material).doubleSided;
+    b.phi = b.twoSided ? 0.5f * p : p;  // what one side emits, as one side is what a point sees
+    emitter[firstTriangle_ + t] = tri.instance;
+    treePower += p;
+  }
+  for (std::size_t i = environmentIndex_; i < power.size(); ++i) outside(i);
+  topWeights.push_back(float(treePower));
+  top_ = Distribution1D(topWeights);
+  tree_ = LightTree(lights, emitter);
+}
+
+float LightSet::pickProbability(std::size_t i, const Vec3f& p, const Vec3f& n) const {
+  if (i >= pick_.size()) return 0;
+  if (sampling_ == LightSampling::Power) return pick_.probability(i);
+  if (topSlot_[i] != std::size_t(-1)) return top_.probability(topSlot_[i]);
+  return top_.probability(outside_.size()) * tree_.pmf(p, n, i);
 }
 
 std::optional<LightSample> LightSet::samplePunctual(const PunctualLight& l, const Vec3f& p) const {
@@ -150,10 +237,29 @@ std::optional<LightSample> LightSet::sampleTriangle(const Triangle& t, const Vec
   return LightSample{wi, dist, le, dist2 / (std::abs(cosLight) * t.area), false};
 }
 
-std::optional<LightSample> LightSet::sample(const Vec3f& p, float uPick, const Vec2f& u) const {
+std::optional<LightSample> LightSet::sample(const Vec3f& p, const Vec3f& n, float uPick,
+                                            const Vec2f& u) const {
   if (pick_.empty()) return std::nullopt;
-  const std::size_t i = pick_.sample(uPick);
-  const float pickPdf = pick_.probability(i);
+  std::size_t i = 0;
+  float pickPdf = 0;
+  if (sampling_ == LightSampling::Power) {
+    i = pick_.sample(uPick);
+    pickPdf = pick_.probability(i);
+  } else {
+    // Without directional lights or an environment the tree is all there is.
+    float uTree = uPick;
+    const std::size_t slot = outside_.empty() ? 0 : top_.sample(uPick, &uTree);
+    if (slot < outside_.size()) {
+      i = outside_[slot];
+      pickPdf = top_.probability(slot);
+    } else {
+      const std::optional<LightPick> pick = tree_.sample(p, n, uTree);
+      if (!pick) return std::nullopt;
+      i = pick->light;
+      // As pickProbability multiplies them, so that the two agree to the bit.
+      pickPdf = top_.probability(slot) * pick->pmf;
+    }
+  }
   std::optional<LightSample> s;
   if (i < firstTriangle_) {
     s = samplePunctual(materials_->scene().lights[i], p);
@@ -167,8 +273,8 @@ std::optional<LightSample> LightSet::sample(const Vec3f& p, float uPick, const V
   return s;
 }
 
-float LightSet::pdfTriangle(int instance, unsigned primitive, const Vec3f& p, const Vec3f& lightPoint,
-                            const Vec3f& lightNormal) const {
+float LightSet::pdfTriangle(int instance, unsigned primitive, const Vec3f& p, const Vec3f& n,
+                            const Vec3f& lightPoint, const Vec3f& lightNormal) const {
   if (instance < 0 || std::size_t(instance) >= instanceFirstTriangle_.size()) return 0;
   const std::int64_t first = instanceFirstTriangle_[instance];
   if (first < 0) return 0;
@@ -179,12 +285,15 @@ float LightSet::pdfTriangle(int instance, unsigned primitive, const Vec3f& p, co
   const float dist2 = lengthSquared(d);
   const float cosLight = std::abs(dot(d, lightNormal)) / std::sqrt(dist2);
   if (!(cosLight > 0) || !(t.area > 0)) return 0;
-  return pick_.probability(firstTriangle_ + k) * dist2 / (cosLight * t.area);
+  return pickProbability(firstTriangle_ + k, p, n) * dist2 / (cosLight * t.area);
 }
 
 float LightSet::pdfEnvironment(const Vec3f& direction) const {
   if (environment_->isBlack() || environmentIndex_ >= pick_.size()) return 0;
-  return pick_.probability(environmentIndex_) * environment_->pdf(direction);
+  // Not pickProbability: the environment's pick depends on no point.
+  const float pick = sampling_ == LightSampling::Power ? pick_.probability(environmentIndex_)
+                                                       : top_.probability(topSlot_[environmentIndex_]);
+  return pick * environment_->pdf(direction);
 }
 
 }  // namespace lensrt

@@ -1,16 +1,19 @@
 // Every light the integrator samples for next-event estimation: emissive
 // triangles (area lights), glTF punctual lights and the environment. One light
-// is picked per estimate with probability proportional to an estimate of its
-// power, then a point/direction on it.
+// is picked per estimate, then a point/direction on it. The pick is by a light
+// tree that adapts to the shading point (LightSampling::Tree), or by an
+// estimate of each light's power alone (LightSampling::Power).
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "core/vec.h"
 #include "render/distribution.h"
 #include "render/environment.h"
+#include "render/light_tree.h"
 #include "render/material_eval.h"
 #include "scene/scene_desc.h"
 
@@ -24,9 +27,21 @@ struct LightSample {
   bool delta;      // point, spot, directional: no MIS with BSDF sampling
 };
 
+// How a light is picked (--light-sampler).
+//  Tree:  the lights with a place (point and spot lights, emissive triangles)
+//         by a LightTree, for each shading point; directional lights and the
+//         environment, which have none, stay outside it, each picked with a
+//         fixed probability, its share of the power (the tree's share is that
+//         of its lights together).
+//  Power: every light by its power alone, wherever the shading point is.
+enum class LightSampling { Tree, Power };
+const char* lightSamplingName(LightSampling sampling);  // "tree", "power"
+std::optional<LightSampling> parseLightSampling(std::string_view name);
+
 class LightSet {
  public:
-  LightSet(const MaterialTable& materials, const Environment& environment, const Bounds3f& sceneBounds);
+  LightSet(const MaterialTable& materials, const Environment& environment, const Bounds3f& sceneBounds,
+           LightSampling sampling = LightSampling::Tree);
 
   bool empty() const { return pick_.empty(); }
   // The colour of the light with the most power (a punctual light, an
@@ -35,13 +50,23 @@ class LightSet {
   std::optional<Rgb> dominantColour() const { return dominantColour_; }
   std::size_t emissiveTriangleCount() const { return triangles_.size(); }
 
-  std::optional<LightSample> sample(const Vec3f& p, float uPick, const Vec2f& u) const;
+  LightSampling sampling() const { return sampling_; }
 
-  // Solid-angle density with which sample() would have produced the hit on an
-  // emissive triangle seen from p (for MIS when a BSDF ray hits an emitter).
-  float pdfTriangle(int instance, unsigned primitive, const Vec3f& p, const Vec3f& lightPoint,
+  // A light sample for the shading point p with shading normal n (zero when
+  // it has none): the pick from uPick, the point on the light from u.
+  std::optional<LightSample> sample(const Vec3f& p, const Vec3f& n, float uPick, const Vec2f& u) const;
+
+  // Solid-angle density with which sample(p, n, ...) would have produced the
+  // hit on an emissive triangle (for MIS when a BSDF ray hits an emitter).
+  float pdfTriangle(int instance, unsigned primitive, const Vec3f& p, const Vec3f& n, const Vec3f& lightPoint,
                     const Vec3f& lightNormal) const;
+  // The same for the environment in `direction` (its pick does not depend
+  // on the point).
   float pdfEnvironment(const Vec3f& direction) const;
+  // The probability that sample(p, n, ...) picks light i: punctual lights
+  // first (scene order), then emissive triangles, then the environment.
+  float pickProbability(std::size_t i, const Vec3f& p, const Vec3f& n) const;
+  std::size_t lightCount() const { return pick_.size(); }
 
  private:
   struct Triangle {
@@ -51,10 +76,12 @@ class LightSet {
     float area;
     int material;
     int mesh;  // for the coverage of MASK and BLEND emitters
+    int instance;
     unsigned prim;
   };
   std::optional<LightSample> sampleTriangle(const Triangle& t, const Vec3f& p, const Vec2f& u) const;
   std::optional<LightSample> samplePunctual(const PunctualLight& l, const Vec3f& p) const;
+  void buildTree(const std::vector<float>& power);
 
   const MaterialTable* materials_;
   const Environment* environment_;
@@ -62,6 +89,14 @@ class LightSet {
   std::vector<std::int64_t> instanceFirstTriangle_;  // -1: instance not emissive
   // Pick order: punctual lights, then triangles, then the environment.
   Distribution1D pick_;
+  LightSampling sampling_;
+  // Tree sampling: the lights outside the tree (directional ones and the
+  // environment), then the tree as a whole, by power; `outside_` maps the
+  // first of them to light indices.
+  Distribution1D top_;
+  std::vector<std::size_t> outside_;
+  std::vector<std::size_t> topSlot_;  // light index -> its slot in top_ (outside lights only)
+  LightTree tree_;                    // over light indices; outside lights have no leaf
   std::optional<Rgb> dominantColour_;
   std::size_t firstTriangle_ = 0, environmentIndex_ = 0;
 };

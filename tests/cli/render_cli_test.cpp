@@ -155,6 +155,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"NegativeEnv", {"@good.gltf", "--env", "constant:-1"}, 2, {"--env"}},
         BadInput{"MissingEnvMap", {"@good.gltf", "--env", "@nowhere.exr"}, 1, {"nowhere.exr"}},
         BadInput{"UnknownAov", {"@good.gltf", "--aov", "depth,colour"}, 2, {"--aov"}},
+        BadInput{"UnknownLightSampler",
+                 {"@good.gltf", "--light-sampler", "bvh"},
+                 2,
+                 {"--light-sampler", "expected tree or power", "'bvh'"}},
         // Asking for what the file does not have is a wrong flag value: exit 2, naming flag and file.
         BadInput{"UnknownCamera",
                  {"@good.gltf", "--camera-node", "nosuchcam"},

@@ -152,7 +152,7 @@ def test_every_keyword_is_read(dof, tmp_path):
     result = dof.render(camera="lens", lens="dgauss-50mm", fstop=4, focus="auto", focus_pixel=(4, 4),
                         sensor="aps-c", res=(24, 16), spp=2, noise_threshold=0.5, min_spp=1, seed=3, aov=("depth",),
                         env="constant:0.5",
-                        env_rotate=10, env_intensity=0.5, max_depth=3, camera_node=0, camera_to_world=pose,
+                        env_rotate=10, env_intensity=0.5, max_depth=3, light_sampler="power", camera_node=0, camera_to_world=pose,
                         threads=1, crop=(0, 24, 0, 16), blades=6, blade_rotation=15, aperture_mask=None,
                         focal_length=None, exposure="physical", shutter=1 / 250, iso=400, dispersion=False,
                         coatings="multi", flare=False, flare_bounces=2, barrel_reflectance=0, film="irradiance", spectral=True, sensor_response="cie1931", white_balance=5000,
@@ -162,7 +162,7 @@ def test_every_keyword_is_read(dof, tmp_path):
     assert "f/4" in m["lensrt:camera"] and "physical 0.004s ISO400" in m["lensrt:exposure"]
     assert m["lensrt:coatings"] == "multi" and m["lensrt:dispersion"] == "off"
     assert "smartphone" in m["lensrt:sensor_noise"] and (tmp_path / "a.dng").exists()
-    assert "max_depth=3" in m["lensrt:settings"] and m["lensrt:seed"] == "3"
+    assert "max_depth=3 light_sampler=power" in m["lensrt:settings"] and m["lensrt:seed"] == "3"
     assert "noise_threshold=0.5 min_spp=1" in m["lensrt:settings"]
     assert "transport=spectral:cie1931,wb=5000K,output=acescg" in m["lensrt:settings"]
 
@@ -172,7 +172,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
     render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
     keywords = [a.arg for a in render.args.kwonlyargs]
-    assert len(keywords) == 45
+    assert len(keywords) == 46
     doc = lensrt.Scene.render.__doc__
     for k in keywords:
         assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line
@@ -201,6 +201,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
         (dict(noise_threshold="low"), "noise_threshold: expected a"),
         (dict(noise_threshold=0.01, min_spp=4), "--min-spp: 4 is above --spp 1"),
         (dict(min_spp=1), "--min-spp: needs --noise-threshold"),
+        (dict(light_sampler="bvh"), "--light-sampler: expected tree or power, got 'bvh'"),
     ],
 )
 def test_bad_options_raise_value_error(dof, kwargs, error):

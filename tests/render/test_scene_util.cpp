@@ -82,7 +82,7 @@ Image renderTestScene(SceneDesc desc, const Camera& camera, const TestRenderSetu
     materials.extra(-1).specularWeight = 0;
     for (int i = 0; i < int(scene.desc().materials.size()); ++i) materials.extra(i).specularWeight = 0;
   }
-  const LightSet lights(materials, setup.environment, scene.bounds());
+  const LightSet lights(materials, setup.environment, scene.bounds(), setup.lightSampling);
   const Integrator integrator(scene, materials, lights, setup.environment, setup.integrator);
   RenderOutput out = renderImage(camera, integrator, setup.render);
   if (dropped) *dropped = out.droppedSamples;

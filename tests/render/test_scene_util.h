@@ -8,6 +8,7 @@
 #include "image/image.h"
 #include "render/environment.h"
 #include "render/integrator.h"
+#include "render/lights.h"
 #include "render/material_eval.h"
 #include "render/renderer.h"
 #include "scene/scene_desc.h"
@@ -36,6 +37,7 @@ struct TestRenderSetup {
   RenderSettings render;
   // Materials whose specular layer is removed: an exactly Lambertian BRDF.
   bool pureLambert = true;
+  LightSampling lightSampling = LightSampling::Tree;
 };
 
 Image renderTestScene(SceneDesc scene, const Camera& camera, const TestRenderSetup& setup,
