@@ -83,7 +83,9 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
                           std::uint64_t paths, std::uint64_t seed, const FilmResponse* response,
                           int threads) {
   const FilmGeometry& film = camera.film();
-  FlareImage image{film.width, film.height, std::vector<Rgb>(std::size_t(film.width) * film.height, Rgb{})};
+  const std::size_t pixelCount = std::size_t(film.width) * std::size_t(film.height);
+  FlareImage image{film.width, film.height, std::vector<Rgb>(pixelCount, Rgb{}),
+                   std::vector<Rgb>(pixelCount, Rgb{})};
   if (paths == 0 || lights.empty()) return image;
   const LensSystem& lens = camera.lens();
   const LensSystem::FlareOptions& options = camera.flareOptions();
@@ -93,7 +95,9 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   const double pixelArea = (film.sensorWidthMm / film.width) * (film.sensorHeightMm / film.height);
   const bool dispersive = camera.tracesWavelengths();
   const std::uint64_t chunks = (paths + kFlareChunk - 1) / kFlareChunk;
-  std::vector<Vec3d> sums(image.pixels.size(), Vec3d{});
+  std::vector<Vec3d> sums(pixelCount, Vec3d{}), variances(pixelCount, Vec3d{});
+  // One light's deposits and their squares: its variance needs its own sum.
+  std::vector<Vec3d> lightSums(pixelCount), lightSquares(pixelCount);
   // Chunks run kGroup at a time, so the deposits held at once stay bounded
   // (kGroup x kFlareChunk paths) however many paths a light takes.
   constexpr std::uint64_t kGroup = 64;
@@ -103,6 +107,8 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   for (std::size_t li = 0; li < lights.size(); ++li) {
     const std::optional<LensLight> light = lensLight(camera, cameraFromWorld, lights[li]);
     if (!light) continue;
+    std::fill(lightSums.begin(), lightSums.end(), Vec3d{});
+    std::fill(lightSquares.begin(), lightSquares.end(), Vec3d{});
     // Each path's share of the flux through the disc, in film units per
     // pixel: the exposure scale times irradiance (flux over pixel area).
     const double share = camera.exposureScale() * discArea / double(paths) / pixelArea;
@@ -167,10 +173,21 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
       });
       // In chunk order, whatever ran where.
       for (std::uint64_t c = group; c < end; ++c)
-        for (const Deposit& d : deposits[std::size_t(c % kGroup)]) sums[d.pixel] += d.value;
+        for (const Deposit& d : deposits[std::size_t(c % kGroup)]) {
+          lightSums[d.pixel] += d.value;
+          lightSquares[d.pixel] += d.value * d.value;
+        }
+    }
+    for (std::size_t i = 0; i < pixelCount; ++i) {
+      sums[i] += lightSums[i];
+      const Vec3d v = lightSquares[i] - lightSums[i] * lightSums[i] / double(paths);
+      variances[i] += Vec3d{std::max(0.0, v.x), std::max(0.0, v.y), std::max(0.0, v.z)};
     }
   }
-  for (std::size_t i = 0; i < sums.size(); ++i) image.pixels[i] = Rgb(sums[i]);
+  for (std::size_t i = 0; i < pixelCount; ++i) {
+    image.pixels[i] = Rgb(sums[i]);
+    image.variance[i] = Rgb(variances[i]);
+  }
   return image;
 }
 

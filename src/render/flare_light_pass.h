@@ -13,6 +13,12 @@
 // Every path counts, the direct image (no reflection) included: camera paths
 // never see a punctual light, so nothing is counted twice.
 //
+// Its noise is reported too: `variance` holds each pixel's variance of the
+// estimate (the paths of a light are independent and alike, so it is
+// sum d^2 - (sum d)^2 / paths over their deposits d, summed over the
+// lights), which the variance AOV adds to the camera paths', so that a
+// noise-aware diff weighs a lamp's image and its ghosts by their own noise.
+//
 // Deterministic: the paths are cut into chunks of kFlareChunk, each with its
 // own random stream keyed by (seed, light, chunk); the chunks run in
 // parallel, and their deposits are summed in chunk order. So the image has
@@ -36,7 +42,8 @@ inline constexpr std::uint64_t kFlareChunk = 4096;
 
 struct FlareImage {
   int width = 0, height = 0;
-  std::vector<Rgb> pixels;  // row by row, the whole frame
+  std::vector<Rgb> pixels;    // row by row, the whole frame
+  std::vector<Rgb> variance;  // of each pixel's estimate, the same layout
   const Rgb& at(int x, int y) const { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
 };
 
