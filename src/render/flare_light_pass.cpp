@@ -184,10 +184,23 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
       variances[i] += Vec3d{std::max(0.0, v.x), std::max(0.0, v.y), std::max(0.0, v.z)};
     }
   }
-  for (std::size_t i = 0; i < pixelCount; ++i) {
-    image.pixels[i] = Rgb(sums[i]);
-    image.variance[i] = Rgb(variances[i]);
-  }
+  for (std::size_t i = 0; i < pixelCount; ++i) image.pixels[i] = Rgb(sums[i]);
+  // A ghost's pixel that few or no paths reached would report little or no
+  // variance where its neighbours, as likely to be hit, report theirs: each
+  // pixel takes at least its 3 x 3 neighbourhood's mean (never less than its
+  // own, so the sharp direct image keeps its own).
+  for (int y = 0; y < film.height; ++y)
+    for (int x = 0; x < film.width; ++x) {
+      Vec3d mean{};
+      int n = 0;
+      for (int v = std::max(0, y - 1); v <= std::min(film.height - 1, y + 1); ++v)
+        for (int u = std::max(0, x - 1); u <= std::min(film.width - 1, x + 1); ++u, ++n)
+          mean += variances[std::size_t(v) * std::size_t(film.width) + std::size_t(u)];
+      mean = mean / double(n);
+      const Vec3d& own = variances[std::size_t(y) * std::size_t(film.width) + std::size_t(x)];
+      image.variance[std::size_t(y) * std::size_t(film.width) + std::size_t(x)] =
+          Rgb(Vec3d{std::max(own.x, mean.x), std::max(own.y, mean.y), std::max(own.z, mean.z)});
+    }
   return image;
 }
 

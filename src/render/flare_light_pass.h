@@ -16,8 +16,10 @@
 // Its noise is reported too: `variance` holds each pixel's variance of the
 // estimate (the paths of a light are independent and alike, so it is
 // sum d^2 - (sum d)^2 / paths over their deposits d, summed over the
-// lights), which the variance AOV adds to the camera paths', so that a
-// noise-aware diff weighs a lamp's image and its ghosts by their own noise.
+// lights, and at least its 3 x 3 neighbourhood's mean, so that a pixel of a
+// ghost that no path happened to reach does not claim none), which the
+// variance AOV adds to the camera paths', so that a noise-aware diff weighs a
+// lamp's image and its ghosts by their own noise.
 //
 // Deterministic: the paths are cut into chunks of kFlareChunk, each with its
 // own random stream keyed by (seed, light, chunk); the chunks run in
