@@ -19,7 +19,8 @@
 // lights, and at least its 3 x 3 neighbourhood's mean, so that a pixel of a
 // ghost that no path happened to reach does not claim none), which the
 // variance AOV adds to the camera paths', so that a noise-aware diff weighs a
-// lamp's image and its ghosts by their own noise.
+// lamp's image and its ghosts by their own noise. Only when asked for
+// (`withVariance`): it takes three times the memory.
 //
 // Deterministic: the paths are cut into chunks of kFlareChunk, each with its
 // own random stream keyed by (seed, light, chunk); the chunks run in
@@ -53,9 +54,10 @@ struct FlareImage {
 // (a spot's cone) adds nothing. The camera must have flare on
 // (LensCameraParams::flareReflections). `response`: spectral transport's
 // film (RenderSettings::filmResponse), each path at its own wavelengths as a
-// camera sample's; none: RGB. `threads` 0: all cores.
+// camera sample's; none: RGB. `threads` 0: all cores. `withVariance`: fill
+// FlareImage::variance (else it stays empty).
 FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLight> lights,
                           std::uint64_t paths, std::uint64_t seed, const FilmResponse* response = nullptr,
-                          int threads = 0);
+                          int threads = 0, bool withVariance = false);
 
 }  // namespace lensrt

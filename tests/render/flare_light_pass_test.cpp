@@ -146,8 +146,9 @@ TEST(FlareLightPass, GhostsAddLightAndTheBitsDoNotDependOnThreads) {
 TEST(FlareLightPass, ItsVarianceIsItsNoise) {
   const LensCamera camera = flareCamera(0);
   const PunctualLight light = pointLight({0.01f, 0.0f, -0.3f});
-  const FlareImage a = flareLightPass(camera, std::span(&light, 1), 1000000, 11);
-  const FlareImage b = flareLightPass(camera, std::span(&light, 1), 1000000, 12);
+  const FlareImage a = flareLightPass(camera, std::span(&light, 1), 1000000, 11, nullptr, 0, true);
+  const FlareImage b = flareLightPass(camera, std::span(&light, 1), 1000000, 12, nullptr, 0, true);
+  EXPECT_TRUE(flareLightPass(camera, std::span(&light, 1), 1000, 11).variance.empty()) << "only when asked";
   ASSERT_EQ(a.variance.size(), a.pixels.size());
   double sum = 0;
   int count = 0;
