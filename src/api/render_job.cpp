@@ -263,8 +263,9 @@ std::shared_ptr<const FlareImage> RenderJob::flareLight(const Camera& camera,
   const std::uint64_t paths =
       std::max<std::uint64_t>(65536, std::uint64_t(std::max(1, settings.samplesPerPixel)) *
                                          std::uint64_t(film.width) * std::uint64_t(film.height) / 4);
-  return std::make_shared<const FlareImage>(
-      flareLightPass(*lens, seen, paths, settings.seed, settings.filmResponse.get(), settings.threads));
+  return std::make_shared<const FlareImage>(flareLightPass(*lens, seen, paths, settings.seed,
+                                                           settings.filmResponse.get(), settings.threads,
+                                                           settings.aovs.variance));
 }
 
 ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {

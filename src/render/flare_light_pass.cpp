@@ -80,10 +80,12 @@ struct Deposit {
 }  // namespace
 
 FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLight> lights,
-                          std::uint64_t paths, std::uint64_t seed, const FilmResponse* response,
-                          int threads) {
+                          std::uint64_t paths, std::uint64_t seed, const FilmResponse* response, int threads,
+                          bool withVariance) {
   const FilmGeometry& film = camera.film();
-  FlareImage image{film.width, film.height, std::vector<Rgb>(std::size_t(film.width) * film.height, Rgb{})};
+  const std::size_t pixelCount = std::size_t(film.width) * std::size_t(film.height);
+  FlareImage image{film.width, film.height, std::vector<Rgb>(pixelCount, Rgb{}),
+                   std::vector<Rgb>(withVariance ? pixelCount : 0, Rgb{})};
   if (paths == 0 || lights.empty()) return image;
   const LensSystem& lens = camera.lens();
   const LensSystem::FlareOptions& options = camera.flareOptions();
@@ -93,7 +95,10 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   const double pixelArea = (film.sensorWidthMm / film.width) * (film.sensorHeightMm / film.height);
   const bool dispersive = camera.tracesWavelengths();
   const std::uint64_t chunks = (paths + kFlareChunk - 1) / kFlareChunk;
-  std::vector<Vec3d> sums(image.pixels.size(), Vec3d{});
+  std::vector<Vec3d> sums(pixelCount, Vec3d{});
+  // The deposits' squares, and one light's own sum (its variance needs it):
+  // only when asked, as they triple the memory.
+  std::vector<Vec3d> variances(withVariance ? pixelCount : 0), lightSums(withVariance ? pixelCount : 0);
   // Chunks run kGroup at a time, so the deposits held at once stay bounded
   // (kGroup x kFlareChunk paths) however many paths a light takes.
   constexpr std::uint64_t kGroup = 64;
@@ -103,6 +108,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   for (std::size_t li = 0; li < lights.size(); ++li) {
     const std::optional<LensLight> light = lensLight(camera, cameraFromWorld, lights[li]);
     if (!light) continue;
+    std::fill(lightSums.begin(), lightSums.end(), Vec3d{});
     // Each path's share of the flux through the disc, in film units per
     // pixel: the exposure scale times irradiance (flux over pixel area).
     const double share = camera.exposureScale() * discArea / double(paths) / pixelArea;
@@ -167,10 +173,36 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
       });
       // In chunk order, whatever ran where.
       for (std::uint64_t c = group; c < end; ++c)
-        for (const Deposit& d : deposits[std::size_t(c % kGroup)]) sums[d.pixel] += d.value;
+        for (const Deposit& d : deposits[std::size_t(c % kGroup)]) {
+          sums[d.pixel] += d.value;  // the image's bits, with or without the variance
+          if (withVariance) {
+            lightSums[d.pixel] += d.value;
+            variances[d.pixel] += d.value * d.value;
+          }
+        }
     }
+    if (withVariance)
+      for (std::size_t i = 0; i < pixelCount; ++i)
+        variances[i] -= lightSums[i] * lightSums[i] / double(paths);
   }
-  for (std::size_t i = 0; i < sums.size(); ++i) image.pixels[i] = Rgb(sums[i]);
+  for (std::size_t i = 0; i < pixelCount; ++i) image.pixels[i] = Rgb(sums[i]);
+  if (!withVariance) return image;
+  // A ghost's pixel that few or no paths reached would report little or no
+  // variance where its neighbours, as likely to be hit, report theirs: each
+  // pixel takes at least its 3 x 3 neighbourhood's mean (never less than its
+  // own, so the sharp direct image keeps its own).
+  for (int y = 0; y < film.height; ++y)
+    for (int x = 0; x < film.width; ++x) {
+      Vec3d mean{};
+      int n = 0;
+      for (int v = std::max(0, y - 1); v <= std::min(film.height - 1, y + 1); ++v)
+        for (int u = std::max(0, x - 1); u <= std::min(film.width - 1, x + 1); ++u, ++n)
+          mean += variances[std::size_t(v) * std::size_t(film.width) + std::size_t(u)];
+      mean = mean / double(n);
+      const Vec3d& own = variances[std::size_t(y) * std::size_t(film.width) + std::size_t(x)];
+      image.variance[std::size_t(y) * std::size_t(film.width) + std::size_t(x)] = Rgb(Vec3d{
+          std::max({0.0, own.x, mean.x}), std::max({0.0, own.y, mean.y}), std::max({0.0, own.z, mean.z})});
+    }
   return image;
 }
 

@@ -204,6 +204,16 @@ RenderOutput renderOutput(const Camera& camera, const FilmState& state, const Fl
       for (int x = region.x0; x < region.x1; ++x)
         for (int c = 0; c < 3; ++c)
           out.image.at(x - region.x0, y - region.y0, rgb[std::size_t(c)]) += flareLight->at(x, y)[c];
+    // The light pass's noise joins the camera paths' (independent: variances add).
+    const std::array<int, 3> var{out.image.channelIndex("variance.R"), out.image.channelIndex("variance.G"),
+                                 out.image.channelIndex("variance.B")};
+    if (var[0] >= 0 && !flareLight->variance.empty())
+      for (int y = region.y0; y < region.y1; ++y)
+        for (int x = region.x0; x < region.x1; ++x) {
+          const Rgb& v =
+              flareLight->variance[std::size_t(y) * std::size_t(flareLight->width) + std::size_t(x)];
+          for (int c = 0; c < 3; ++c) out.image.at(x - region.x0, y - region.y0, var[std::size_t(c)]) += v[c];
+        }
   }
   out.droppedSamples = state.droppedSamples();
   out.cameraSamples = state.samplesTaken();

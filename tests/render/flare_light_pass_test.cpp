@@ -10,11 +10,15 @@
 // - under spectral transport (the CIE observer) white light gives the same in
 //   every channel;
 // - on axis it is centred within 0.5 px, and ghosts only add;
-// - the same bits on 1 and 2 threads.
+// - the same bits on 1 and 2 threads;
+// - the variance it reports is its noise: two seeds' images differ by it
+//   (the mean square of (a - b) / sqrt(var a + var b) is 1 within 15% over
+//   a defocused lamp's pixels).
 #include "render/flare_light_pass.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -132,6 +136,34 @@ TEST(FlareLightPass, GhostsAddLightAndTheBitsDoNotDependOnThreads) {
       totals(direct, flareLightPass(direct, std::span(&light, 1), 300000, 3, nullptr, 1)).flux;
   std::printf("with ghosts %.5g, direct alone %.5g\n", withGhosts, without);
   EXPECT_GT(withGhosts, without);
+}
+
+// Two independent passes of a lamp 0.3 m away, out of focus (the lens at
+// infinity): a disc of about 20 pixels across, each taking many paths, where
+// z = (a - b) / sqrt(var a + var b) has a mean square of 1 if the variances
+// are right (over the pixels that took 20 paths or more: value^2 over
+// variance, the deposits being alike). Any pixel reached reports a variance.
+TEST(FlareLightPass, ItsVarianceIsItsNoise) {
+  const LensCamera camera = flareCamera(0);
+  const PunctualLight light = pointLight({0.01f, 0.0f, -0.3f});
+  const FlareImage a = flareLightPass(camera, std::span(&light, 1), 1000000, 11, nullptr, 0, true);
+  const FlareImage b = flareLightPass(camera, std::span(&light, 1), 1000000, 12, nullptr, 0, true);
+  EXPECT_TRUE(flareLightPass(camera, std::span(&light, 1), 1000, 11).variance.empty()) << "only when asked";
+  ASSERT_EQ(a.variance.size(), a.pixels.size());
+  double sum = 0;
+  int count = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double va = a.variance[i][c], vb = b.variance[i][c];
+      const double pa = a.pixels[i][c], pb = b.pixels[i][c];
+      if (pa != 0) ASSERT_GT(va, 0) << "a pixel with deposits reports no variance";
+      if (!(pa != 0 && pb != 0 && pa * pa >= 20 * va && pb * pb >= 20 * vb)) continue;
+      sum += (pa - pb) * (pa - pb) / (va + vb);
+      ++count;
+    }
+  std::printf("mean z^2 over %d pixel channels that took 20 paths or more: %.4f\n", count, sum / count);
+  ASSERT_GT(count, 300);
+  EXPECT_NEAR(sum / count, 1.0, 0.15);
 }
 
 }  // namespace
