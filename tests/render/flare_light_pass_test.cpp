@@ -156,7 +156,9 @@ TEST(FlareLightPass, ItsVarianceIsItsNoise) {
     for (int c = 0; c < 3; ++c) {
       const double va = a.variance[i][c], vb = b.variance[i][c];
       const double pa = a.pixels[i][c], pb = b.pixels[i][c];
-      if (pa != 0) ASSERT_GT(va, 0) << "a pixel with deposits reports no variance";
+      if (pa != 0) {
+        ASSERT_GT(va, 0) << "a pixel with deposits reports no variance";
+      }
       if (!(pa != 0 && pb != 0 && pa * pa >= 20 * va && pb * pb >= 20 * vb)) continue;
       sum += (pa - pb) * (pa - pb) / (va + vb);
       ++count;
