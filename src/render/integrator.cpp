@@ -142,8 +142,9 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
     if (maxComponent(sp.emission) > 0) {
       float w = 1.0f;
       if (depth > 0)
-        w = powerHeuristic(prevBsdfPdf, lights_.pdfTriangle(hit->instance, hit->primitive, prevPosition,
-                                                            prevNormal, hit->position, hit->geometricNormal));
+        w = powerHeuristic(prevBsdfPdf,
+                           lights_.pdfTriangle(hit->instance, hit->primitive, prevPosition, prevNormal,
+                                               hit->position, hit->geometricNormal, ray.time));
       radiance += beta * sp.emission * w;
     }
     if (depth >= settings_.maxDepth) break;
@@ -162,7 +163,8 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
 
     // Next-event estimation.
     if (!lights_.empty()) {
-      const std::optional<LightSample> ls = lights_.sample(hit->position, sp.frame.n, u.get1D(0), u.get2D(1));
+      const std::optional<LightSample> ls =
+          lights_.sample(hit->position, sp.frame.n, u.get1D(0), u.get2D(1), ray.time);
       if (ls && (dot(ls->wi, ng) > 0 || bsdf.transmits()) && consistent(ls->wi)) {
         const BsdfValue bv = bsdf.evalPdf(wo, ls->wi);
         const Spectrum f = bv.f * std::abs(dot(ls->wi, sp.frame.n));

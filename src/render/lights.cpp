@@ -82,6 +82,7 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
     }
   }
   firstTriangle_ = power.size();
+  motionSteps_ = std::size_t(std::max(0, scene.motionSteps));
   for (std::size_t k = 0; k < scene.instances.size(); ++k) {
     const MeshInstance& inst = scene.instances[k];
     if (inst.mesh < 0 || std::size_t(inst.mesh) >= scene.meshes.size()) continue;
@@ -116,6 +117,16 @@ LightSet::LightSet(const MaterialTable& materials, const Environment& environmen
       tri.mesh = inst.mesh;
       tri.instance = int(k);
       tri.prim = static_cast<unsigned>(t);
+      tri.handed = handed;
+      if (inst.moves()) {
+        tri.firstStep = steps_.size();
+        for (const MeshInstance::Step& step : inst.motion) {
+          const std::vector<Vec3f>& at = scene.meshes[step.mesh].positions;
+          const Vec3f q0 = step.worldFromObject.point(at[i0]);
+          steps_.push_back(
+              {q0, step.worldFromObject.point(at[i1]) - q0, step.worldFromObject.point(at[i2]) - q0});
+        }
+      }
       triangles_.push_back(tri);
       power.push_back(std::isfinite(tri.area) ? kPiF * tri.area * le : 0.0f);
     }
@@ -167,6 +178,14 @@ void LightSet::buildTree(const std::vector<float>& power) {
       outside(i);
     } else if (power[i] > 0) {
       lights[i] = punctualBounds(punctual[i]);
+      // Moving: everywhere it goes, a spot's cone widened by how far it turns.
+      float turn = 0;
+      for (const PunctualLight::Step& step : punctual[i].motion) {
+        lights[i].bounds.extend(step.position);
+        turn = std::max(turn, std::acos(std::clamp(dot(step.direction, punctual[i].direction), -1.0f, 1.0f)));
+      }
+      if (turn > 0 && punctual[i].type == PunctualLight::Type::Spot)
+        lights[i].cosThetaO = std::cos(std::min(kPiF, std::acos(lights[i].cosThetaO) + turn + 1e-3f));
       treePower += power[i];
     }
   }
@@ -180,6 +199,19 @@ void LightSet::buildTree(const std::vector<float>& power) {
     b.bounds.extend(tri.p0 + tri.e2);
     b.axis = tri.normal;
     b.cosThetaO = 1;  // one normal
+    if (tri.firstStep != kNoSteps) {
+      // Moving: wherever it goes and however it turns during the shutter.
+      for (std::size_t k = 0; k < motionSteps_; ++k) {
+        const TriangleStep& s = steps_[tri.firstStep + k];
+        b.bounds.extend(s.p0);
+        b.bounds.extend(s.p0 + s.e1);
+        b.bounds.extend(s.p0 + s.e2);
+        if (const auto normal = unitVector(cross(s.e1, s.e2) * tri.handed))
+          b.cosThetaO = std::min(b.cosThetaO, std::max(-1.0f, dot(*normal, tri.normal) - 1e-3f));
+        else
+          b.cosThetaO = -1;
+      }
+    }
     b.cosThetaE = 0;  // Lambertian: to the horizon
     b.twoSided = materials_->material(tri.material).doubleSided;
     b.phi = b.twoSided ? 0.5f * p : p;  // what one side emits, as one side is what a point sees
@@ -197,6 +229,35 @@ float LightSet::pickProbability(std::size_t i, const Vec3f& p, const Vec3f& n) c
   if (sampling_ == LightSampling::Power) return pick_.probability(i);
   if (topSlot_[i] != std::size_t(-1)) return top_.probability(topSlot_[i]);
   return top_.probability(outside_.size()) * tree_.pmf(p, n, i);
+}
+
+LightSet::Triangle LightSet::posed(const Triangle& t, float time) const {
+  if (t.firstStep == kNoSteps || motionSteps_ < 2) return t;
+  const float f = std::clamp(time, 0.0f, 1.0f) * float(motionSteps_ - 1);
+  const std::size_t k = std::min(static_cast<std::size_t>(f), motionSteps_ - 2);
+  const float a = f - float(k);
+  const TriangleStep &s0 = steps_[t.firstStep + k], &s1 = steps_[t.firstStep + k + 1];
+  Triangle at = t;
+  at.p0 = s0.p0 * (1 - a) + s1.p0 * a;
+  at.e1 = s0.e1 * (1 - a) + s1.e1 * a;
+  at.e2 = s0.e2 * (1 - a) + s1.e2 * a;
+  const Vec3f c = cross(at.e1, at.e2);
+  const float len = length(c);
+  at.area = 0.5f * len;
+  at.normal = len > 0 ? c * (t.handed / len) : t.normal;
+  return at;
+}
+
+PunctualLight LightSet::posed(const PunctualLight& l, float time) const {
+  if (l.motion.size() < 2) return l;
+  const float f = std::clamp(time, 0.0f, 1.0f) * float(l.motion.size() - 1);
+  const std::size_t k = std::min(static_cast<std::size_t>(f), l.motion.size() - 2);
+  const float a = f - float(k);
+  PunctualLight at = l;
+  at.position = l.motion[k].position * (1 - a) + l.motion[k + 1].position * a;
+  if (const auto d = unitVector(l.motion[k].direction * (1 - a) + l.motion[k + 1].direction * a))
+    at.direction = *d;
+  return at;
 }
 
 std::optional<LightSample> LightSet::samplePunctual(const PunctualLight& l, const Vec3f& p) const {
@@ -237,8 +298,8 @@ std::optional<LightSample> LightSet::sampleTriangle(const Triangle& t, const Vec
   return LightSample{wi, dist, le, dist2 / (std::abs(cosLight) * t.area), false};
 }
 
-std::optional<LightSample> LightSet::sample(const Vec3f& p, const Vec3f& n, float uPick,
-                                            const Vec2f& u) const {
+std::optional<LightSample> LightSet::sample(const Vec3f& p, const Vec3f& n, float uPick, const Vec2f& u,
+                                            float time) const {
   if (pick_.empty()) return std::nullopt;
   std::size_t i = 0;
   float pickPdf = 0;
@@ -262,9 +323,9 @@ std::optional<LightSample> LightSet::sample(const Vec3f& p, const Vec3f& n, floa
   }
   std::optional<LightSample> s;
   if (i < firstTriangle_) {
-    s = samplePunctual(materials_->scene().lights[i], p);
+    s = samplePunctual(posed(materials_->scene().lights[i], time), p);
   } else if (i < environmentIndex_) {
-    s = sampleTriangle(triangles_[i - firstTriangle_], p, u);
+    s = sampleTriangle(posed(triangles_[i - firstTriangle_], time), p, u);
   } else if (auto e = environment_->sample(u)) {
     s = LightSample{e->direction, kInfinityF, e->radiance, e->pdf, false};
   }
@@ -274,18 +335,19 @@ std::optional<LightSample> LightSet::sample(const Vec3f& p, const Vec3f& n, floa
 }
 
 float LightSet::pdfTriangle(int instance, unsigned primitive, const Vec3f& p, const Vec3f& n,
-                            const Vec3f& lightPoint, const Vec3f& lightNormal) const {
+                            const Vec3f& lightPoint, const Vec3f& lightNormal, float time) const {
   if (instance < 0 || std::size_t(instance) >= instanceFirstTriangle_.size()) return 0;
   const std::int64_t first = instanceFirstTriangle_[instance];
   if (first < 0) return 0;
   const std::size_t k = std::size_t(first) + primitive;
   if (k >= triangles_.size()) return 0;
-  const Triangle& t = triangles_[k];
+  const Triangle& stored = triangles_[k];
+  const float area = stored.firstStep == kNoSteps ? stored.area : posed(stored, time).area;
   const Vec3f d = lightPoint - p;
   const float dist2 = lengthSquared(d);
   const float cosLight = std::abs(dot(d, lightNormal)) / std::sqrt(dist2);
-  if (!(cosLight > 0) || !(t.area > 0)) return 0;
-  return pickProbability(firstTriangle_ + k, p, n) * dist2 / (cosLight * t.area);
+  if (!(cosLight > 0) || !(area > 0)) return 0;
+  return pickProbability(firstTriangle_ + k, p, n) * dist2 / (cosLight * area);
 }
 
 float LightSet::pdfEnvironment(const Vec3f& direction) const {

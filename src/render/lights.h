@@ -54,12 +54,14 @@ class LightSet {
 
   // A light sample for the shading point p with shading normal n (zero when
   // it has none): the pick from uPick, the point on the light from u.
-  std::optional<LightSample> sample(const Vec3f& p, const Vec3f& n, float uPick, const Vec2f& u) const;
+  // `time`: the path's (Ray::time), where moving lights are (motion blur).
+  std::optional<LightSample> sample(const Vec3f& p, const Vec3f& n, float uPick, const Vec2f& u,
+                                    float time = 0.0f) const;
 
   // Solid-angle density with which sample(p, n, ...) would have produced the
   // hit on an emissive triangle (for MIS when a BSDF ray hits an emitter).
   float pdfTriangle(int instance, unsigned primitive, const Vec3f& p, const Vec3f& n, const Vec3f& lightPoint,
-                    const Vec3f& lightNormal) const;
+                    const Vec3f& lightNormal, float time = 0.0f) const;
   // The same for the environment in `direction` (its pick does not depend
   // on the point).
   float pdfEnvironment(const Vec3f& direction) const;
@@ -78,7 +80,17 @@ class LightSet {
     int mesh;  // for the coverage of MASK and BLEND emitters
     int instance;
     unsigned prim;
+    float handed;                      // -1 when the placement mirrors (the front flips)
+    std::size_t firstStep = kNoSteps;  // a moving triangle's steps in steps_
   };
+  // A moving triangle's corners at one motion step.
+  struct TriangleStep {
+    Vec3f p0, e1, e2;
+  };
+  static constexpr std::size_t kNoSteps = std::size_t(-1);
+  // The triangle, or the light, where it is at `time` (linear between steps, as Embree moves geometry).
+  Triangle posed(const Triangle& t, float time) const;
+  PunctualLight posed(const PunctualLight& l, float time) const;
   std::optional<LightSample> sampleTriangle(const Triangle& t, const Vec3f& p, const Vec2f& u) const;
   std::optional<LightSample> samplePunctual(const PunctualLight& l, const Vec3f& p) const;
   void buildTree(const std::vector<float>& power);
@@ -86,6 +98,8 @@ class LightSet {
   const MaterialTable* materials_;
   const Environment* environment_;
   std::vector<Triangle> triangles_;
+  std::vector<TriangleStep> steps_;  // motionSteps_ per moving triangle
+  std::size_t motionSteps_ = 0;
   std::vector<std::int64_t> instanceFirstTriangle_;  // -1: instance not emissive
   // Pick order: punctual lights, then triangles, then the environment.
   Distribution1D pick_;

@@ -146,6 +146,12 @@ struct PunctualLight {
   float innerConeAngle = 0.0f;
   float outerConeAngle = 0.7853981634f;
   float range = 0.0f;  // 0: infinite
+  // Motion blur: where the light is and points at each of the scene's
+  // motion steps (the first being position and direction); empty: still.
+  struct Step {
+    Vec3f position, direction;
+  };
+  std::vector<Step> motion{};
 };
 
 struct CameraDesc {

@@ -72,8 +72,8 @@ void addMotion(SceneDesc& still, const std::vector<SceneDesc>& poses, Warnings& 
   if (poses.empty()) return;
   const std::size_t stillMeshes = still.meshes.size();
   for (const SceneDesc& pose : poses) {
-    bool same =
-        pose.instances.size() == still.instances.size() && pose.cameras.size() == still.cameras.size();
+    bool same = pose.instances.size() == still.instances.size() &&
+                pose.cameras.size() == still.cameras.size() && pose.lights.size() == still.lights.size();
     for (std::size_t i = 0; same && i < pose.instances.size(); ++i)
       same = sameMeshShape(still.meshes[still.instances[i].mesh], pose.meshes[pose.instances[i].mesh]);
     if (!same) {
@@ -126,12 +126,27 @@ void addMotion(SceneDesc& still, const std::vector<SceneDesc>& poses, Warnings& 
     if (!moves) cameraMotion[c].clear();
     anyMoves = anyMoves || moves;
   }
+  // Punctual lights, in the same order in every pose.
+  std::vector<std::vector<PunctualLight::Step>> lightMotion(still.lights.size());
+  for (std::size_t l = 0; l < still.lights.size(); ++l) {
+    const PunctualLight& light = still.lights[l];
+    bool moves = false;
+    lightMotion[l].push_back({light.position, light.direction});
+    for (const SceneDesc& pose : poses) {
+      const PunctualLight& at = pose.lights[l];
+      moves = moves || !(at.position == light.position) || !(at.direction == light.direction);
+      lightMotion[l].push_back({at.position, at.direction});
+    }
+    if (!moves) lightMotion[l].clear();
+    anyMoves = anyMoves || moves;
+  }
   if (!anyMoves) {
     still.meshes.resize(stillMeshes);
     return;
   }
   for (std::size_t i = 0; i < still.instances.size(); ++i) still.instances[i].motion = std::move(motion[i]);
   for (std::size_t c = 0; c < still.cameras.size(); ++c) still.cameras[c].motion = std::move(cameraMotion[c]);
+  for (std::size_t l = 0; l < still.lights.size(); ++l) still.lights[l].motion = std::move(lightMotion[l]);
   still.motionSteps = static_cast<int>(poses.size()) + 1;
 }
 

@@ -21,19 +21,12 @@
 #include "camera_test_util.h"
 #include "core/constants.h"
 #include "optics/focus.h"
+#include "split_mix_for_tests.h"
 
 namespace lensrt {
 namespace {
 
-struct SplitMix {
-  std::uint64_t state;
-  double operator()() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-  }
-};
+using test::SplitMix;
 
 LensCamera flareCamera(int blades) {
   Warnings warnings;

@@ -95,6 +95,85 @@ std::string animatedRectangle(double width, double height, const std::string& pa
   return doc.dump();
 }
 
+// A white diffuse floor (z = 0, 2 x 2 m) under the orthographic camera, lit
+// only by a light moving along +x at 1 m/s from x = -1 at t = 0, 0.4 m up:
+// a 1 W/sr point light (`emitter` false) or a 0.1 m emissive square facing
+// down (true).
+std::string floorUnderMovingLight(bool emitter) {
+  const float floor[] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+  const float lamp[] = {-0.05f, -0.05f, 0, -0.05f, 0.05f, 0, 0.05f, 0.05f, 0, 0.05f, -0.05f, 0};  // faces -z
+  const unsigned short indices[] = {0, 1, 2, 0, 2, 3, 0, 0};
+  const float times[] = {0, 10};
+  const float translations[] = {-1, 0, 0.4f, 9, 0, 0.4f};
+  std::string data(reinterpret_cast<const char*>(floor), sizeof floor);
+  data.append(reinterpret_cast<const char*>(lamp), sizeof lamp);
+  data.append(reinterpret_cast<const char*>(indices), sizeof indices);
+  data.append(reinterpret_cast<const char*>(times), sizeof times);
+  data.append(reinterpret_cast<const char*>(translations), sizeof translations);
+  json light = {{"translation", {-1, 0, 0.4}}};
+  if (emitter)
+    light["mesh"] = 1;
+  else
+    light["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
+  json doc = {
+      {"asset", {{"version", "2.0"}}},
+      {"scene", 0},
+      {"scenes", {{{"nodes", {0, 1, 2}}}}},
+      {"nodes", {{{"mesh", 0}}, light, {{"camera", 0}, {"translation", {0, 0, 5}}}}},
+      {"cameras",
+       {{{"type", "orthographic"},
+         {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 100}}}}}},
+      {"materials",
+       {{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}}}},
+        {{"emissiveFactor", {1, 1, 1}},
+         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 100}}}}},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}}}},
+      {"meshes",
+       {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 2}, {"material", 0}}}}},
+        {{"primitives", {{{"attributes", {{"POSITION", 1}}}, {"indices", 2}, {"material", 1}}}}}}},
+      {"accessors",
+       {{{"bufferView", 0},
+         {"componentType", 5126},
+         {"count", 4},
+         {"type", "VEC3"},
+         {"min", {-1, -1, 0}},
+         {"max", {1, 1, 0}}},
+        {{"bufferView", 1},
+         {"componentType", 5126},
+         {"count", 4},
+         {"type", "VEC3"},
+         {"min", {-0.05, -0.05, 0}},
+         {"max", {0.05, 0.05, 0}}},
+        {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}},
+        {{"bufferView", 3},
+         {"componentType", 5126},
+         {"count", 2},
+         {"type", "SCALAR"},
+         {"min", {0}},
+         {"max", {10}}},
+        {{"bufferView", 4}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
+        {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 48}},
+        {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 12}},
+        {{"buffer", 0}, {"byteOffset", 112}, {"byteLength", 8}},
+        {{"buffer", 0}, {"byteOffset", 120}, {"byteLength", 24}}}},
+      {"buffers",
+       {{{"byteLength", data.size()}, {"uri", "data:application/octet-stream;base64," + cli::base64(data)}}}},
+      {"animations",
+       {{{"name", "carry"},
+         {"channels", {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}}}},
+         {"samplers", {{{"input", 3}, {"output", 4}, {"interpolation", "LINEAR"}}}}}}},
+  };
+  if (emitter) {
+    doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  } else {
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 683}}}}}}};
+  }
+  return doc.dump();
+}
+
 // The rectangle moving along +x at `speed` m/s from x = -1 at t = 0.
 std::string movingRectangle(double width, double height, double speed) {
   return animatedRectangle(width, height, "translation", {0, 10}, {-1, 0, 0, float(-1 + 10 * speed), 0, 0});
@@ -201,6 +280,38 @@ TEST(MotionBlurCli, ACameraMovingPastAnEmitterStreaksIt) {
   cli::writeFile(dir / "pan.gltf", movingCamera(0.1, 0.4, 1.0));
   const Image blur = render(dir, "pan.gltf", "pan.exr", {"--time", "0.8", "--shutter", "0.4"});
   EXPECT_NEAR(widthAtHalf(columnProfile(blur, 90, 110), 0.1 / 0.4), 0.4 * kPixelsPerMetre, 1.0);
+}
+
+// Moving lights light the scene from where they are at each ray's time: a
+// floor lit by a light crossing it during the shutter is the mean of the
+// still frames over the shutter (8 instants, each midway in its eighth),
+// in each quarter of the frame across the motion within 3%. Shown to fail
+// with the lights left where they were when the shutter opened (the point
+// light's quarters at 2.38, 1.26, 0.40 and 0.33 of the mean).
+TEST(MotionBlurCli, MovingLightsLightFromWhereTheyAreAtEachRaysTime) {
+  const TempDir dir;
+  for (const bool emitter : {false, true}) {
+    const std::string name = emitter ? "emitter.gltf" : "lamp.gltf";
+    cli::writeFile(dir / name, floorUnderMovingLight(emitter));
+    const auto quarters = [&](const Image& image) {
+      std::vector<double> q(4, 0.0);
+      for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) q[std::size_t(4 * x / image.width)] += image.at(x, y, 0);
+      return q;
+    };
+    const std::vector<double> blurred =
+        quarters(render(dir, name, "blur.exr", {"--time", "0.6", "--shutter", "0.8"}, 128));
+    std::vector<double> mean(4, 0.0);
+    for (int k = 0; k < 8; ++k) {
+      const std::string at = std::to_string(0.6 + 0.8 * (k + 0.5) / 8);
+      const std::vector<double> q =
+          quarters(render(dir, name, "still.exr", {"--time", at, "--shutter", "0"}, 16));
+      for (int i = 0; i < 4; ++i) mean[std::size_t(i)] += q[std::size_t(i)] / 8;
+    }
+    for (int i = 0; i < 4; ++i)
+      EXPECT_NEAR(blurred[std::size_t(i)] / mean[std::size_t(i)], 1.0, 0.03)
+          << (emitter ? "emissive square" : "point light") << ", quarter " << i;
+  }
 }
 
 // A trapezoid shutter opening over a quarter of the interval and closing

@@ -27,21 +27,14 @@
 #include "optics/focus.h"
 #include "optics/lens_system.h"
 #include "optics_test_util.h"
+#include "split_mix_for_tests.h"
 
 namespace lensrt {
 namespace {
 
 using End = LensSystem::FlareTrace::End;
 
-struct SplitMix {
-  std::uint64_t state;
-  double operator()() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-  }
-};
+using test::SplitMix;
 
 // A ray from a point at infinity in `direction` (toward +z) through the
 // point (x, y) of the front vertex plane, started 20 mm before it.

@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "optics/lens_system.h"
+#include "split_mix_for_tests.h"
 
 namespace lensrt {
 namespace {
@@ -36,15 +37,7 @@ LensPrescription plate(double n) {
   return lens;
 }
 
-struct SplitMix {
-  std::uint64_t state;
-  double operator()() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-  }
-};
+using test::SplitMix;
 
 // The mean weight that reaches the scene, and the fractions of rays ending
 // at the film and blocked, over `rays` axial rays from the film.
