@@ -301,6 +301,10 @@ EmbreeGeometry RenderScene::Impl::newMovingTriangles(const MeshInstance& inst,
     stepVertices.push_back(vertices);
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
       const Vec3f p = inst.motion[k].worldFromObject.point(m.positions[i]);
+      // The loader checked the opening pose alone; the animation may carry a mesh off later.
+      if (!(std::abs(p.x) <= 1e15f && std::abs(p.y) <= 1e15f && std::abs(p.z) <= 1e15f))
+        throw InputError(desc.sourceFile,
+                         "mesh '" + m.name + "' moves beyond 1e15 during the shutter (check the animation)");
       vertices[3 * i] = p.x;
       vertices[3 * i + 1] = p.y;
       vertices[3 * i + 2] = p.z;
