@@ -77,6 +77,16 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
                  "normalized (an ideal lens records the scene radiance on axis at any f-number; default) or "
                  "physical (exposure H = E t, 1.0 = ISO 12232 saturation: value = 683 E t ISO / 78)")
       ->check(CLI::IsMember({"normalized", "physical"}));
+  // A flag of the shutter's timing, checked by shutterTiming on options holding it alone.
+  const auto timingCheck = [](std::string CameraOptions::*field, const std::string& description) {
+    return checkWith(
+        [field](const std::string& v) {
+          CameraOptions c;
+          c.*field = v;
+          return shutterTiming(c);
+        },
+        description);
+  };
   cmd.add_option(
          "--shutter", o.shutter,
          "shutter time in seconds, e.g. 1/125 (default 1/100): the exposure under --exposure physical, "
@@ -86,23 +96,11 @@ void addCameraOptions(CLI::App& cmd, CameraOptions& o) {
          "--shutter-curve", o.shutterCurve,
          "how the shutter opens: box (at once; default) or trapezoid:F (a leaf shutter taking the share F "
          "<= 0.5 of --shutter to open, and again to close), e.g. --shutter-curve trapezoid:0.2")
-      ->check(checkWith(
-          [](const std::string& v) {
-            CameraOptions c;
-            c.shutterCurve = v;
-            return shutterTiming(c);
-          },
-          "box|trapezoid:F"));
+      ->check(timingCheck(&CameraOptions::shutterCurve, "box|trapezoid:F"));
   cmd.add_option("--rolling-shutter", o.rollingShutter,
                  "a CMOS rolling shutter: each row starts its exposure later by READOUT x row / rows, e.g. "
                  "--rolling-shutter 1/30 (default: a global shutter)")
-      ->check(checkWith(
-          [](const std::string& v) {
-            CameraOptions c;
-            c.rollingShutter = v;
-            return shutterTiming(c);
-          },
-          "SECONDS"));
+      ->check(timingCheck(&CameraOptions::rollingShutter, "SECONDS"));
   cmd.add_option("--readout", o.readout,
                  "the rolling shutter's direction in the image as seen: top-down (default), bottom-up, "
                  "left-right or right-left")
