@@ -302,6 +302,7 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& se
       {"lensrt:max_depth", std::to_string(frame_.maxDepth)},
       {"lensrt:environment", environmentDescription()},
       {"lensrt:render_seconds", fmt::format("{:.3f}", result.seconds)},
+      {"lensrt:scene_seconds", fmt::format("{:.4f}", scene_->seconds())},
       {"lensrt:version", LENSRT_VERSION},
       {"lensrt:command_line", commandLine},
       {"lensrt:nan_samples", std::to_string(result.output.droppedSamples)},

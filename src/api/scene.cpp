@@ -1,5 +1,7 @@
 #include "api/scene.h"
 
+#include <chrono>
+
 #include "api/scene_digest.h"
 #include "core/error.h"
 #include "scene/gltf_loader.h"
@@ -21,7 +23,14 @@ SceneDesc loadScene(const SceneLoadOptions& options, Warnings& warnings) {
 }  // namespace
 
 Scene::Scene(const SceneLoadOptions& options, Warnings& warnings)
-    : options_(options), geometry_(loadScene(options, warnings)), materials_(geometry_.desc()) {}
+    : options_(options), geometry_(loadScene(options, warnings)), materials_(geometry_.desc()) {
+  seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+}
+
+Scene::Scene(const SceneLoadOptions& options, SceneDesc posed, double poseSeconds)
+    : options_(options), geometry_(std::move(posed)), materials_(geometry_.desc()) {
+  seconds_ = poseSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+}
 
 std::string Scene::digest(const std::string& environmentMap) const {
   const std::lock_guard lock(digestMutex_);

@@ -16,6 +16,7 @@
 #include "app/option_checks.h"
 #include "app/render_flags.h"
 #include "cluster/cluster.h"
+#include "cluster/render_sequence.h"
 #include "cluster/render_to_file.h"
 #include "core/error.h"
 
@@ -101,14 +102,10 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
     throw UsageError("--frames", "give --frames A:B, or --time / --frame for one frame, not both");
   if (!args.resume.empty())
     throw UsageError("--frames", "--resume continues one frame's checkpoint: resume it alone with --frame N");
-  frameFileName(args.output, range.first);  // the pattern, checked before any work
-  for (int f = range.first; f <= range.last; f += range.step) {
-    FileRender frame = job;
-    frame.scene.time.seconds = double(f) / args.frame.fps;
-    frame.output = frameFileName(args.output, f);
-    if (const int status = renderToFile(frame, *context.cluster); status != 0) return status;
-  }
-  return 0;
+  std::vector<SequenceFrame> frames;  // the output's pattern checked before any work
+  for (int f = range.first; f <= range.last; f += range.step)
+    frames.push_back({double(f) / args.frame.fps, frameFileName(args.output, f)});
+  return renderSequence(job, frames, *context.cluster);
 }
 
 }  // namespace

@@ -13,6 +13,9 @@ namespace lensrt {
 class Cluster {
  public:
   Cluster(int& argc, char**& argv);
+  // A job of one process, whatever started this one: a rank's own part of a
+  // job whose ranks work apart (whole frames of --frames).
+  Cluster() = default;
   ~Cluster();
   Cluster(const Cluster&) = delete;
   Cluster& operator=(const Cluster&) = delete;

@@ -96,7 +96,8 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   });
 
   // 2. Scene, lights, camera, render.
-  const RenderJob job(sceneOptions, warnings);
+  const RenderJob job =
+      args.loaded ? RenderJob(args.loaded, sceneOptions, warnings) : RenderJob(sceneOptions, warnings);
   checkImageFitsInMemory(job.width(), job.height(), filmChannels(settings.aovs).size());
   const PixelRegion region = partOfFrame(args, job.width(), job.height());
   settings.region = region;

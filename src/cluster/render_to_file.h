@@ -5,6 +5,7 @@
 // alone reads, writes and speaks). The work itself is api's RenderJob.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -19,7 +20,10 @@
 namespace lensrt {
 
 struct FileRender {
-  SceneOptions scene;       // the scene file and the frame
+  SceneOptions scene;  // the scene file and the frame
+  // The scene already loaded and posed at scene.time (a frame of --frames);
+  // none: render loads scene.scene.
+  std::shared_ptr<const Scene> loaded;
   CameraOptions camera;     // the model and its optics, and the sensor
   RenderSettings settings;  // spp, seed, threads, tile size, AOVs; the region comes from tile/crop
   std::string output;       // -o: .exr (continuable) or a preview (.png, .jpg, .tif, ...), .dpx

@@ -399,7 +399,8 @@ class Traversal {
   Traversal(const Context& ctx, SceneDesc& desc, const std::map<int, gltf::AnimatedTrs>& animated)
       : ctx_(ctx), desc_(desc), animated_(animated) {}
 
-  void run(const std::vector<int>& roots) {
+  enum class Visit { All, WorldsOnly };
+  void run(const std::vector<int>& roots, Visit mode = Visit::All) {
     struct Item {
       int node;
       Transform parent;
@@ -427,6 +428,7 @@ class Traversal {
       worlds_.emplace(item.node, world);
       for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
     }
+    if (mode == Visit::WorldsOnly) return;
     // Every node's world transform first: a skin needs its joints' wherever
     // they sit in the tree.
     for (const int index : order)
@@ -652,20 +654,30 @@ void checkRenderable(const Context& ctx, const SceneDesc& desc, const gltf::Mesh
 }
 
 // The scene's meshes, instances, lights and cameras posed at `time` (no
-// materials), and every node's world transform.
-std::pair<SceneDesc, std::map<int, Transform>> poseAt(const Context& ctx, const std::vector<int>& roots,
-                                                      const AnimationTime& time) {
+// materials).
+SceneDesc poseAt(const Context& ctx, const std::vector<int>& roots, const AnimationTime& time) {
   SceneDesc desc;
   const std::map<int, gltf::AnimatedTrs> animated = gltf::animatedNodes(ctx, time);
   Traversal traversal(ctx, desc, animated);
   traversal.run(roots);
-  return {std::move(desc), traversal.worlds()};
+  return desc;
 }
 
-// Motion blur over time.spanSeconds: probe the animation at evenly spaced
-// moments for how many time steps it needs, then pose the scene at them.
+// Every node's world transform at `time`, nothing converted.
+std::map<int, Transform> worldsAt(const Context& ctx, const std::vector<int>& roots,
+                                  const AnimationTime& time) {
+  SceneDesc unused;
+  const std::map<int, gltf::AnimatedTrs> animated = gltf::animatedNodes(ctx, time);
+  Traversal traversal(ctx, unused, animated);
+  traversal.run(roots, Traversal::Visit::WorldsOnly);
+  return traversal.worlds();
+}
+
+// Motion blur over time.spanSeconds: probe the node worlds at evenly spaced
+// moments for how many time steps the span needs, then pose the scene at
+// them. `opening`: the worlds at the span's start, which the caller has.
 void addAnimationMotion(const Context& ctx, const std::vector<int>& roots, const AnimationTime& time,
-                        SceneDesc& desc) {
+                        std::map<int, Transform> opening, SceneDesc& desc) {
   constexpr int kProbeIntervals = 8;
   const auto at = [&](int step, int steps) {
     AnimationTime t = time;
@@ -673,49 +685,76 @@ void addAnimationMotion(const Context& ctx, const std::vector<int>& roots, const
     t.spanSeconds = 0;
     return t;
   };
-  std::vector<std::map<int, Transform>> probeWorlds;
-  std::vector<SceneDesc> probes;
-  for (int k = 0; k <= kProbeIntervals; ++k) {
-    auto [pose, worlds] = poseAt(ctx, roots, at(k, kProbeIntervals + 1));
-    probeWorlds.push_back(std::move(worlds));
-    if (k > 0) probes.push_back(std::move(pose));
-  }
+  std::vector<std::map<int, Transform>> probeWorlds{std::move(opening)};
+  for (int k = 1; k <= kProbeIntervals; ++k)
+    probeWorlds.push_back(worldsAt(ctx, roots, at(k, kProbeIntervals + 1)));
   const int steps = motionStepCount(probeWorlds);
   std::vector<SceneDesc> poses;
-  if (steps == kProbeIntervals + 1) {
-    poses = std::move(probes);
-  } else {
-    for (int k = 1; k < steps; ++k) poses.push_back(poseAt(ctx, roots, at(k, steps)).first);
-  }
+  for (int k = 1; k < steps; ++k) poses.push_back(poseAt(ctx, roots, at(k, steps)));
   addMotion(desc, poses, ctx.warnings);
 }
 
 }  // namespace
 
-SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
-                   const SceneReadLimits& limits, const AnimationTime& time) {
-  const std::string name = file.string();
-  const tinygltf::Model model = parse(file, name, warnings, limits);
-  const Context ctx{model, name, warnings, limits};
-  checkVersion(ctx);
-  checkExtensions(ctx);
+struct GltfLoader::Impl {
+  std::string name;
+  SceneReadLimits limits;
+  Warnings& warnings;
+  tinygltf::Model model;
+  Context ctx;
+  std::vector<int> roots;
+  bool stillNoticed = false;  // the "--time on a file without animation" notice, once
+
+  Impl(const std::filesystem::path& file, int sceneIndex, Warnings& w, const SceneReadLimits& readLimits)
+      : name(file.string()),
+        limits(readLimits),
+        warnings(w),
+        model(parse(file, name, w, limits)),
+        ctx{model, name, w, limits} {
+    checkVersion(ctx);
+    checkExtensions(ctx);
+    roots = sceneRoots(ctx, sceneIndex);
+  }
+};
+
+GltfLoader::GltfLoader(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
+                       const SceneReadLimits& limits)
+    : impl_(std::make_unique<Impl>(file, sceneIndex, warnings, limits)) {}
+
+GltfLoader::~GltfLoader() = default;
+
+SceneDesc GltfLoader::load(const AnimationTime& time, SceneDesc* previous) {
+  const Context& ctx = impl_->ctx;
+  const tinygltf::Model& model = impl_->model;
   SceneDesc desc;
-  desc.sourceFile = name;
-  gltf::loadMaterials(ctx, desc);
+  desc.sourceFile = impl_->name;
+  if (previous) {
+    desc.materials = std::move(previous->materials);
+    desc.textures = std::move(previous->textures);
+  } else {
+    gltf::loadMaterials(ctx, desc);
+  }
   const std::map<int, gltf::AnimatedTrs> animated = gltf::animatedNodes(ctx, time);
-  if (model.animations.empty() && time.seconds != 0)
-    warnings.warn(
+  if (model.animations.empty() && time.seconds != 0 && !impl_->stillNoticed) {
+    impl_->stillNoticed = true;
+    impl_->warnings.warn(
         fmt::format("--time {:g}: the file has no animation, so it renders as it is at rest", time.seconds));
+  }
   if (!model.animations.empty())
     desc.pose =
         fmt::format("time={:g} animation={}{}", time.seconds, time.animation.empty() ? "all" : time.animation,
                     time.spanSeconds > 0 ? fmt::format(" span={:g}", time.spanSeconds) : "");
-  const std::vector<int> roots = sceneRoots(ctx, sceneIndex);
   Traversal traversal(ctx, desc, animated);
-  traversal.run(roots);
+  traversal.run(impl_->roots);
   checkRenderable(ctx, desc, traversal.stats());
-  if (time.spanSeconds > 0 && !model.animations.empty()) addAnimationMotion(ctx, roots, time, desc);
+  if (time.spanSeconds > 0 && !model.animations.empty())
+    addAnimationMotion(ctx, impl_->roots, time, traversal.worlds(), desc);
   return desc;
+}
+
+SceneDesc loadGltf(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
+                   const SceneReadLimits& limits, const AnimationTime& time) {
+  return GltfLoader(file, sceneIndex, warnings, limits).load(time);
 }
 
 }  // namespace lensrt

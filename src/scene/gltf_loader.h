@@ -13,6 +13,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 
 #include "core/warnings.h"
 #include "scene/animation_time.h"
@@ -20,6 +21,27 @@
 #include "scene/scene_file_access.h"
 
 namespace lensrt {
+
+// A glTF file parsed once and posed at any number of moments (`--frames`).
+// The constructor reads and checks the file and picks its scene; load()
+// poses it. Throws as loadGltf does.
+class GltfLoader {
+ public:
+  GltfLoader(const std::filesystem::path& file, int sceneIndex, Warnings& warnings,
+             const SceneReadLimits& limits = {});
+  ~GltfLoader();
+  GltfLoader(const GltfLoader&) = delete;
+  GltfLoader& operator=(const GltfLoader&) = delete;
+
+  // The scene posed at `time`, with its materials and textures: read from
+  // the file, or when `previous` is given (a scene this loader made before)
+  // taken from it, which saves decoding the textures again.
+  SceneDesc load(const AnimationTime& time, SceneDesc* previous = nullptr);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // sceneIndex: -1 for the file's default scene (its "scene" property, else scene
 // 0), otherwise a 0-based index into the file's scenes. Throws InputError(file,

@@ -586,6 +586,12 @@ const SceneDesc& RenderScene::desc() const {
   return impl_->desc;
 }
 
+SceneDesc RenderScene::releaseDesc() && {
+  SceneDesc desc = std::move(impl_->desc);
+  impl_.reset();
+  return desc;
+}
+
 Bounds3f RenderScene::bounds() const {
   RTCBounds b;
   rtcGetSceneBounds(impl_->top.get(), &b);

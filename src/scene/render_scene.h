@@ -55,6 +55,11 @@ class RenderScene {
   const SceneDesc& desc() const;
   Bounds3f bounds() const;
 
+  // Ends the scene (its BVH is released) and hands over its description,
+  // whose materials and textures the next frame of a sequence reuses. Only
+  // destruction may follow.
+  SceneDesc releaseDesc() &&;
+
   // How the instances were mapped onto Embree: meshes placed once are baked into
   // world space; meshes placed several times are one shared scene plus one
   // Embree instance per placement.

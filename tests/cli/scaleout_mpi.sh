@@ -10,6 +10,8 @@
 #   interrupt  SIGINT/SIGTERM to the ranks or to mpirun: a valid, resumable
 #              EXR with the samples done, bit-identical to a render of that spp
 #   compare    lensrt compare under MPI writes the EXRs of one process
+#   frames     --frames: whole frames to the ranks, each the bits of one
+#              process's render; a rank that cannot load the scene fails it
 #   adaptive   adaptive sampling (--noise-threshold): 2 ranks render the bits
 #              of one process for every camera model, and a checkpoint
 #              written under MPI resumes to them
@@ -72,6 +74,28 @@ models)
   "$lensrt" "${flare[@]}" -o one.exr
   "${mpi[@]}" "$lensrt" "${flare[@]}" --tile-size 4 -o two.exr
   same one.exr two.exr "--flare on: 2 ranks against 1 process"
+  ;;
+
+frames)
+  # --frames under MPI: whole frames go to the ranks in turn, each frame the
+  # bits of one process's --frame render (not a render shared by 2 ranks);
+  # a rank that cannot read the scene fails the job once, before any frame.
+  # shellcheck disable=SC2054
+  base=(render "$src/scenes/propeller.gltf" --res 32x24 --spp 2 --seed 5 -q --fps 12 --shutter 1/50)
+  "${mpi[@]}" "$lensrt" "${base[@]}" --frames 1:5:2 -o f.##.exr
+  for f in 1 3 5; do
+    "$lensrt" "${base[@]}" --frame $f -o one.exr
+    same one.exr "f.0$f.exr" "--frames under MPI, frame $f"
+    [[ -z $(meta "f.0$f.exr" lensrt:mpi_ranks) ]] || fail "frame $f was shared between ranks"
+  done
+  [[ ! -e f.02.exr && ! -e f.04.exr ]] || fail "--frames 1:5:2 wrote an even frame"
+  cp "$src/scenes/propeller.gltf" . && mkdir elsewhere
+  status=0 && rank1_in elsewhere "$lensrt" render propeller.gltf --res 8x8 --spp 1 -q --frames 0:3 \
+    -o out.##.exr 2>err || status=$?
+  [[ $status == 1 ]] || { cat err; fail "--frames, rank 1 without the scene: status $status, expected 1"; }
+  [[ $(grep -c 'lensrt: error:' err) == 1 ]] && grep -q '^lensrt: error: rank 1 of 2: propeller.gltf: ' err ||
+    { cat err; fail "--frames, rank 1 without the scene: expected one error line naming rank 1"; }
+  ! ls out.*.exr elsewhere/out.*.exr >/dev/null 2>&1 || fail "--frames: a frame was written after a failure"
   ;;
 
 adaptive)

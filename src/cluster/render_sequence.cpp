@@ -1,0 +1,47 @@
+#include "cluster/render_sequence.h"
+
+#include <fmt/core.h>
+
+#include <cstddef>
+#include <optional>
+
+#include "api/scene_sequence.h"
+
+namespace lensrt {
+
+int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& frames, Cluster& cluster) {
+  const bool leader = cluster.isMain();
+  const bool quiet = job.quiet || !leader;
+  // The file's warnings, each once for the whole sequence.
+  Warnings warnings([&](const std::string& message) {
+    if (!quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", job.scene.scene, message);
+  });
+  SceneSequence sequence(
+      SceneLoadOptions{job.scene.scene, job.scene.sceneIndex, job.scene.limits, job.scene.time}, warnings);
+  if (cluster.size() > 1) {
+    // Every rank has read the file: go on together, or stop together with the first error.
+    if (const auto failure = cluster.agree(std::nullopt)) {
+      if (leader)
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
+                   failure->line);
+      return failure->status;
+    }
+  }
+  Cluster alone;  // each frame is one process's render
+  const auto ranks = static_cast<std::size_t>(cluster.size()),
+             rank = static_cast<std::size_t>(cluster.rank());
+  for (std::size_t i = rank; i < frames.size(); i += ranks) {
+    FileRender frame = job;
+    frame.quiet = quiet;
+    frame.scene.time.seconds = frames[i].seconds;
+    frame.output = frames[i].output;
+    frame.loaded = sequence.at(frames[i].seconds);
+    if (const int status = renderToFile(frame, alone); status != 0) return status;
+    // The other ranks render quietly (one progress bar), but say what they wrote.
+    if (!leader && !job.quiet)
+      fmt::print(stderr, "lensrt: rank {} of {} wrote {}\n", cluster.rank(), cluster.size(), frame.output);
+  }
+  return 0;
+}
+
+}  // namespace lensrt

@@ -1,0 +1,25 @@
+// `lensrt render --frames`: a sequence of frames of one animated scene, each
+// written as a single render of it would be. The file is read once
+// (api/scene_sequence.h); under MPI whole frames go to the ranks in turn,
+// each rendering its frames alone, so every frame is bit for bit the
+// render of one process.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cluster/cluster.h"
+#include "cluster/render_to_file.h"
+
+namespace lensrt {
+
+struct SequenceFrame {
+  double seconds = 0;  // when the shutter opens
+  std::string output;  // the frame's file
+};
+
+// Renders `frames` of `job` (whose output and time each frame replaces).
+// Returns the exit status: 0, or that of the first frame that did not finish.
+int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& frames, Cluster& cluster);
+
+}  // namespace lensrt
