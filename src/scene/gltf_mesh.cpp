@@ -178,10 +178,19 @@ void applySkin(const Context& ctx, const tinygltf::Primitive& prim,
                        m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3] * w,
                        m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3] * w});
   };
+  // Weights meant to sum to 1 miss by the rounding of their integer types
+  // (1/255 for bytes) quietly; a vertex missing by more is named once.
+  std::size_t off = 0, first = n;
+  for (std::size_t v = 0; v < n; ++v)
+    if (total[v] > 0 && std::abs(total[v] - 1.0) > 0.01 && off++ == 0) first = v;
+  if (off > 0)
+    ctx.warnings.warn(
+        fmt::format("{}: the joint weights of {} vertices do not sum to 1 (vertex {}: {:g}); "
+                    "they are normalised",
+                    label, off, first, total[first]));
   for (std::size_t v = 0; v < n; ++v) {
     if (!(total[v] > 0)) continue;  // no weight: the vertex keeps its bind pose
     Transform::Matrix& m = blend[v];
-    // Weights meant to sum to 1 often miss by rounding: normalise them.
     for (auto& row : m)
       for (double& x : row) x /= total[v];
     mesh.positions[v] = apply(m, mesh.positions[v], 1.0);

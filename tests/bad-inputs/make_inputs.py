@@ -267,3 +267,64 @@ d["extensionsUsed"] = ["EXT_texture_webp"]
 d["images"].append({"uri": "corrupt.webp"})
 d["textures"] = [{"source": 0, "extensions": {"EXT_texture_webp": {"source": 1}}}]
 write("texture-webp-with-png-fallback.gltf", d)
+
+
+# Animation (issue 23): the good triangle with a camera, and one animation (or
+# skin) whose data is broken in one way each. Channels that cannot be used are
+# skipped with a warning naming them; a skin that cannot be used is an error.
+def animated(channels, extra_floats=()):
+    """The good triangle seen by a camera, with `channels`: (node, path, times,
+    values, components, interpolation) each; extra_floats: more float arrays
+    appended as accessors after them (returned indices are in the doc's order)."""
+    d = copy.deepcopy(good)
+    d["scenes"][0]["nodes"] = [0, 1]
+    d["nodes"].append({"camera": 0, "translation": [0.3, 0.3, 3]})
+    d["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]
+    raw = bytearray(base64.b64decode(d["buffers"][0]["uri"].split(",")[1]))
+
+    def accessor(values, components):
+        offset = len(raw)
+        raw.extend(struct.pack("<%df" % len(values), *values))
+        d["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": 4 * len(values)})
+        kind = {1: "SCALAR", 3: "VEC3", 4: "VEC4", 16: "MAT4"}[components]
+        d["accessors"].append({"bufferView": len(d["bufferViews"]) - 1, "componentType": 5126,
+                               "count": len(values) // components, "type": kind})
+        return len(d["accessors"]) - 1
+
+    samplers, targets = [], []
+    for node, path, times, values, components, interpolation in channels:
+        samplers.append({"input": accessor(times, 1), "output": accessor(values, components),
+                         "interpolation": interpolation})
+        targets.append({"sampler": len(samplers) - 1, "target": {"node": node, "path": path}})
+    extra = [accessor(values, components) for values, components in extra_floats]
+    if samplers:
+        d["animations"] = [{"name": "move", "samplers": samplers, "channels": targets}]
+    d["buffers"][0] = {"byteLength": len(raw),
+                       "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(raw)).decode()}
+    return d, extra
+
+
+inf = float("inf")
+slide = (0, "translation", [0, 1], [0, 0, 0, 0.5, 0, 0], 3, "LINEAR")
+write("animation-time-not-finite.gltf", animated([(0, "translation", [0, inf], [0, 0, 0, 0.5, 0, 0], 3,
+                                                   "LINEAR")])[0])
+write("animation-output-count-wrong.gltf", animated([(0, "translation", [0, 1, 2], [0, 0, 0, 0.5, 0, 0], 3,
+                                                      "LINEAR")])[0])
+write("animation-unknown-path.gltf", animated([(0, "colour", [0, 1], [0, 0, 0, 0.5, 0, 0], 3, "LINEAR")])[0])
+write("animation-missing-node.gltf", animated([(7, "translation", [0, 1], [0, 0, 0, 0.5, 0, 0], 3,
+                                                "LINEAR")])[0])
+# A skin over one joint (node 2) whose inverse bind matrices number two.
+identity = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]
+d, (joints, weights, binds) = animated([slide], [([0, 0, 0, 0] * 3, 4), ([0.5, 0, 0, 0] * 3, 4),
+                                                 (identity * 2, 16)])
+# JOINTS_0 as unsigned bytes: the float zeros' bytes read as joint 0 for every vertex.
+d["accessors"][joints]["componentType"] = 5121
+d["nodes"][0]["skin"] = 0
+d["nodes"].append({"name": "bone"})
+d["scenes"][0]["nodes"].append(2)
+d["meshes"][0]["primitives"][0]["attributes"].update({"JOINTS_0": joints, "WEIGHTS_0": weights})
+d["skins"] = [{"joints": [2], "inverseBindMatrices": binds}]
+write("skin-inverse-bind-count-wrong.gltf", d)
+# The same skin with one bind matrix, and weights that sum to 0.5: normalised with a warning.
+d["accessors"][binds]["count"] = 1
+write("skin-weights-not-normalised.gltf", d)
