@@ -406,3 +406,76 @@ TEST(RenderScene, RejectsNonFinitePositions) {
 
 }  // namespace
 }  // namespace lensrt
+
+namespace lensrt {
+namespace {
+
+// A bar from the origin to x = 1 (0.1 wide), turning 90 degrees about z
+// during the shutter in two time steps, its normals leaning toward +x.
+SceneDesc spinningBar(bool emissive) {
+  SceneDesc d;
+  d.sourceFile = "test.gltf";
+  Mesh m;
+  m.name = "bar";
+  m.positions = {{0, -0.05f, 0}, {1, -0.05f, 0}, {1, 0.05f, 0}, {0, 0.05f, 0}};
+  const float h = std::sqrt(0.5f);
+  m.normals.assign(4, Vec3f{h, 0, h});
+  m.indices = {0, 1, 2, 0, 2, 3};
+  if (emissive) {
+    Material glow;
+    glow.emissive = {1, 1, 1};
+    d.materials.push_back(glow);
+    m.material = 0;
+  }
+  d.meshes.push_back(m);
+  const Transform turned = Transform::rotateQuaternion(0, 0, std::sqrt(0.5), std::sqrt(0.5));
+  d.instances.push_back({0, Transform(), {{0, Transform()}, {0, turned}}});
+  d.motionSteps = 2;
+  return d;
+}
+
+Ray downAt(float x, float y, float time) {
+  Ray r = down(x, y);
+  r.time = time;
+  return r;
+}
+
+// A rigid instance turns on a true arc between its two steps (Embree slerps
+// its rotation): halfway through the shutter the bar lies at 45 degrees at
+// full length, where baked vertices would cut the chord (its tip at 0.71).
+TEST(RenderScene, ARigidlyMovingInstanceTurnsOnATrueArc) {
+  const RenderScene scene(spinningBar(false));
+  EXPECT_EQ(scene.stats().embreeInstances, 1);
+  EXPECT_EQ(scene.stats().bakedGeometries, 0);
+  const float c = std::sqrt(0.5f);
+  for (const float r : {0.3f, 0.9f, 0.98f}) {
+    const auto hit = scene.intersect(downAt(r * c, r * c, 0.5f));
+    ASSERT_TRUE(hit) << r;
+    expectVec(hit->position, {r * c, r * c, 0});
+    expectVec(hit->geometricNormal, {0, 0, 1});
+    // The leaning normal turned by 45 degrees too: (cos 45, sin 45, 1) / sqrt 2.
+    expectVec(hit->shadingNormal, {0.5f, 0.5f, c}, 1e-4f);
+  }
+  EXPECT_FALSE(scene.intersect(downAt(1.02f * c, 1.02f * c, 0.5f)));
+  // At the ends of the shutter, the steps themselves.
+  EXPECT_TRUE(scene.intersect(downAt(0.95f, 0, 0)));
+  EXPECT_FALSE(scene.intersect(downAt(0.95f, 0, 1)));
+  EXPECT_TRUE(scene.intersect(downAt(0, 0.95f, 1)));
+  // A quarter of the way: 22.5 degrees.
+  const float a = 0.3926991f;
+  EXPECT_TRUE(scene.intersect(downAt(0.95f * std::cos(a), 0.95f * std::sin(a), 0.25f)));
+}
+
+// An emitter is baked at each step instead: the light sampler poses emitters
+// linearly between steps, and rays must find them where it does.
+TEST(RenderScene, AMovingEmitterIsBakedAtItsTimeSteps) {
+  const RenderScene scene(spinningBar(true));
+  EXPECT_EQ(scene.stats().embreeInstances, 0);
+  EXPECT_EQ(scene.stats().bakedGeometries, 1);
+  const float c = std::sqrt(0.5f);
+  EXPECT_TRUE(scene.intersect(downAt(0.6f * c, 0.6f * c, 0.5f)));
+  EXPECT_FALSE(scene.intersect(downAt(0.9f * c, 0.9f * c, 0.5f)));  // beyond the chord
+}
+
+}  // namespace
+}  // namespace lensrt
