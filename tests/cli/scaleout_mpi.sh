@@ -89,6 +89,16 @@ frames)
     [[ -z $(meta "f.0$f.exr" lensrt:mpi_ranks) ]] || fail "frame $f was shared between ranks"
   done
   [[ ! -e f.02.exr && ! -e f.04.exr ]] || fail "--frames 1:5:2 wrote an even frame"
+  # A motion-blurred frame (the propeller turns 30 degrees during the 1/50 s
+  # shutter) shared by 2 ranks, and written to 1 spp under MPI and resumed
+  # to 2 in one process: the bits of one process.
+  "${mpi[@]}" "$lensrt" "${base[@]}" --frame 3 --tile-size 4 -o two.exr
+  same f.03.exr two.exr "a motion-blurred frame on 2 ranks"
+  # shellcheck disable=SC2054
+  first=(render "$src/scenes/propeller.gltf" --res 32x24 --spp 1 --seed 5 -q --fps 12 --shutter 1/50)
+  "${mpi[@]}" "$lensrt" "${first[@]}" --frame 3 --checkpoint 0.001 -o ck.exr
+  "$lensrt" "${base[@]}" --frame 3 --resume ck.exr -o ck.exr
+  same f.03.exr ck.exr "a motion-blurred frame checkpointed under MPI and resumed"
   cp "$src/scenes/propeller.gltf" . && mkdir elsewhere
   status=0 && rank1_in elsewhere "$lensrt" render propeller.gltf --res 8x8 --spp 1 -q --frames 0:3 \
     -o out.##.exr 2>err || status=$?
