@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,12 +27,20 @@ std::shared_ptr<const Scene> SceneSequence::at(double seconds) {
   const auto started = std::chrono::steady_clock::now();
   SceneLoadOptions options = options_;
   options.time.seconds = seconds;
-  // The last frame's materials and textures, when no render holds it any more.
+  // The last frame's materials and textures: taken when nothing else holds
+  // it any more, else copied (still cheaper than decoding the textures).
   std::optional<SceneDesc> previous;
   std::map<std::string, std::string> digests;
   if (last_ && last_.use_count() == 1) {
     digests = std::move(last_->digests_);
     previous = std::move(last_->geometry_).releaseDesc();
+  } else if (last_) {
+    const SceneDesc& held = last_->geometry().desc();
+    previous.emplace();
+    previous->materials = held.materials;
+    previous->textures = held.textures;
+    const std::lock_guard lock(last_->digestMutex_);
+    digests = last_->digests_;
   }
   last_.reset();
   SceneDesc posed = loader_->load(options.time, previous ? &*previous : nullptr);

@@ -26,7 +26,8 @@ class SceneSequence {
 
   // The scene when the shutter opens at `seconds` (the options' animation
   // and span kept). The previous frame's scene hands its materials,
-  // textures and file digests over once nothing else holds it.
+  // textures and file digests over (a copy of them while something else
+  // still holds it). Not thread-safe: one call at a time.
   std::shared_ptr<const Scene> at(double seconds);
 
  private:

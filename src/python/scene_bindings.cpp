@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,7 @@
 #include "api/render_options.h"
 #include "api/render_request.h"
 #include "api/scene.h"
+#include "api/scene_sequence.h"
 #include "core/error.h"
 #include "core/transform.h"
 #include "python/arguments.h"
@@ -119,6 +121,17 @@ py::array channelView(py::object owner, int first, int count) {
   return py::array(py::dtype::of<float>(), shape, strides, data, owner);
 }
 
+// The parsed file behind Scene.at(): shared by a scene and every scene posed
+// from it, so the file is read once however many moments are posed.
+struct PosedFrom {
+  explicit PosedFrom(const SceneLoadOptions& options)
+      : warnings(options.file), sequence(options, warnings.sink()) {}
+  std::mutex mutex;  // one pose at a time: the GIL is released while posing
+  WarningList warnings;
+  std::size_t emitted = 0;  // warnings already issued
+  SceneSequence sequence;
+};
+
 class PyScene {
  public:
   PyScene(py::handle file, py::handle sceneIndex, py::handle allowExternalFiles, py::handle maxTextureMiB,
@@ -145,6 +158,33 @@ class PyScene {
   }
 
   const std::string& file() const { return scene_->options().file; }
+
+  // The same file posed at another moment: parsed once for this scene and
+  // every scene posed from it (their materials and textures are copied).
+  PyScene at(py::handle time) {
+    const double seconds = toDouble(time, "time");
+    if (!posedFrom_) posedFrom_ = std::make_shared<PosedFrom>(scene_->options());
+    const std::shared_ptr<PosedFrom> from = posedFrom_;
+    std::shared_ptr<const Scene> posed;
+    std::vector<std::string> fresh;
+    {
+      const py::gil_scoped_release release;
+      const std::lock_guard lock(from->mutex);
+      try {
+        posed = from->sequence.at(seconds);
+      } catch (...) {
+        const std::vector<std::string>& all = from->warnings.messages();
+        fresh.assign(all.begin() + std::ptrdiff_t(from->emitted), all.end());
+        from->emitted = all.size();
+        throw;
+      }
+      const std::vector<std::string>& all = from->warnings.messages();
+      fresh.assign(all.begin() + std::ptrdiff_t(from->emitted), all.end());
+      from->emitted = all.size();
+    }
+    WarningList::emit(file(), fresh);
+    return PyScene(std::move(posed), from);
+  }
 
   std::unique_ptr<PyRenderResult> render(const py::kwargs& given) const {
     // Every keyword, with the command line's defaults (`lensrt render --help`).
@@ -349,7 +389,11 @@ class PyScene {
   }
 
  private:
+  PyScene(std::shared_ptr<const Scene> scene, std::shared_ptr<PosedFrom> from)
+      : scene_(std::move(scene)), posedFrom_(std::move(from)) {}
+
   std::shared_ptr<const Scene> scene_;
+  std::shared_ptr<PosedFrom> posedFrom_;  // made by the first at()
 };
 
 }  // namespace
@@ -420,6 +464,11 @@ ValueError for a broken one. The GIL is released while it loads.)doc")
 pose the nodes, cameras and lights at (lensrt render --time); animation: a name or
 index to play one of them (None: all).)doc")
       .def_property_readonly("file", &PyScene::file, "The scene file (str).")
+      .def("at", &PyScene::at, arg("time"),
+           R"doc(The same scene posed at another moment (seconds): the file is read once for this
+scene and every scene posed from it, each pose keeps the animation chosen and
+builds its own BVH (as lensrt render --frames does). For a sequence:
+[scene.at(f / 24).render(...) for f in range(240)].)doc")
       .def("__repr__", [](const PyScene& s) { return "lensrt.Scene('" + s.file() + "')"; })
       .def("render", &PyScene::render,
            R"doc(render(camera="pinhole", lens=None, fstop=None, focus="auto", focus_pixel=None,

@@ -22,9 +22,11 @@ class WarningList {
   const std::vector<std::string>& messages() const { return list_; }
   // Issues them (with the GIL held); throws error_already_set when Python
   // turns warnings into errors.
-  void emit() const {
-    for (const std::string& w : list_) {
-      const std::string text = prefix_.empty() ? w : prefix_ + ": " + w;
+  void emit() const { emit(prefix_, list_); }
+  // Issues `messages` as emit() does, each prefixed with `prefix`.
+  static void emit(const std::string& prefix, const std::vector<std::string>& messages) {
+    for (const std::string& w : messages) {
+      const std::string text = prefix.empty() ? w : prefix + ": " + w;
       if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 2) != 0) throw pybind11::error_already_set();
     }
   }

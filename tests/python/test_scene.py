@@ -307,6 +307,26 @@ def test_time_poses_the_animated_scene(tmp_path):
         lensrt.Scene(path, animation="walk")
 
 
+def test_at_poses_the_file_again_with_the_bits_of_a_new_scene(cli, tmp_path):
+    """Scene.at(t) is the file posed at t: the bits of lensrt.Scene(file, time=t) and of
+    `lensrt render --frames`, each pose its own Scene (earlier ones stay usable)."""
+    path = SCENES / "propeller.gltf"
+    scene = lensrt.Scene(path)
+    cli("render", path, "--frames", "1:2", "--fps", "24", "--res", "24x24", "--spp", "2", "-q",
+        "-o", tmp_path / "f.#.exr")
+    posed = [scene.at(f / 24) for f in (1, 2)]
+    for f, at in zip((1, 2), posed):
+        a = at.render(res=(24, 24), spp=2)
+        b = lensrt.Scene(path, time=f / 24).render(res=(24, 24), spp=2)
+        assert np.array_equal(a.rgb, b.rgb)
+        assert lensrt.diff(tmp_path / f"f.{f}.exr", a, fail=0, warn=0)["overall"]["maxError"] == 0.0
+    first = scene.render(res=(24, 24), spp=2).rgb
+    assert np.abs(first - posed[0].render(res=(24, 24), spp=2).rgb).mean() > 0.001  # the propeller turned
+    assert np.array_equal(posed[1].at(0.0).render(res=(24, 24), spp=2).rgb, first)
+    with pytest.raises(ValueError, match="time"):
+        scene.at(float("nan"))
+
+
 def test_flare_and_keyframed_fstop_are_the_command_lines(dof, cli, tmp_path):
     """flare=, flare_bounces=, barrel_reflectance= and an fstop given as keyframes render the bits
     of `lensrt render` with the same flags."""
