@@ -209,15 +209,21 @@ void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
                                          std::span<std::optional<CameraRay>> out) const {
   if (polygon_ || params_.mask || params_.flareReflections)
     return Camera::generateCameraSpaceRays(samples, out);
-  // In chunks on the stack: the bounds sample and the lens traces a chunk's
-  // rays together.
+  // In chunks: the bounds sample and the lens traces a chunk's rays together.
+  // The chunk's arrays (20 KB) are kept per thread: on the stack, every call
+  // zeroed them (their elements' default member initialisers), which cost
+  // callgrind's count 200 instructions per ray at 4 spp.
   constexpr std::size_t kChunk = 4 * LensSystem::kTraceLanes;
-  std::array<Vec3d, kChunk> filmPoints;
-  std::array<Vec2d, kChunk> filmXY, lensSamples;
-  std::array<PupilSample, kChunk> pupil;
-  std::array<LensRay, kChunk> rays;
-  std::array<double, kChunk> weights, wavelengths;
-  std::array<std::optional<LensRay>, kChunk> traced;
+  struct Chunk {
+    std::array<Vec3d, kChunk> filmPoints;
+    std::array<Vec2d, kChunk> filmXY, lensSamples;
+    std::array<PupilSample, kChunk> pupil;
+    std::array<LensRay, kChunk> rays;
+    std::array<double, kChunk> weights, wavelengths;
+    std::array<std::optional<LensRay>, kChunk> traced;
+  };
+  static thread_local Chunk chunk;
+  auto& [filmPoints, filmXY, lensSamples, pupil, rays, weights, wavelengths, traced] = chunk;
   for (std::size_t first = 0; first < samples.size(); first += kChunk) {
     const std::size_t n = std::min(kChunk, samples.size() - first);
     for (std::size_t i = 0; i < n; ++i) {

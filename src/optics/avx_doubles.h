@@ -57,4 +57,58 @@ LENSRT_AVX inline V sqrt(V v) {
 
 }  // namespace lensrt::avx
 
+// The same helpers on eight doubles in an AVX-512 register (F for the
+// arithmetic, DQ for comparisons as lane masks); callers run them only where
+// avx512Enabled() says so. The same operations per lane as the four-wide
+// ones, so the same bits: AVX-512 brings FMA, which GCC would contract
+// a * b + c into (one rounding instead of two), so contraction is off.
+#define LENSRT_AVX512 __attribute__((target("avx512f,avx512dq"), optimize("fp-contract=off")))
+
+namespace lensrt::avx512 {
+
+using V = double __attribute__((vector_size(64)));
+using M = long long __attribute__((vector_size(64)));
+inline constexpr std::size_t kWidth = 8;
+
+LENSRT_AVX512 inline V splat(double x) {
+  return V{x, x, x, x, x, x, x, x};
+}
+LENSRT_AVX512 inline V load(const double* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+LENSRT_AVX512 inline void store(double* p, V v) {
+  std::memcpy(p, &v, sizeof v);
+}
+LENSRT_AVX512 inline M loadMask(const long long* p) {
+  M m;
+  std::memcpy(&m, p, sizeof m);
+  return m;
+}
+LENSRT_AVX512 inline void storeMask(long long* p, M m) {
+  std::memcpy(p, &m, sizeof m);
+}
+LENSRT_AVX512 inline bool none(M m) {
+  return (m[0] | m[1] | m[2] | m[3] | m[4] | m[5] | m[6] | m[7]) == 0;
+}
+LENSRT_AVX512 inline M finite(V v) {
+  constexpr long long kNoSign = 0x7fffffffffffffffll;
+  return (V)((M)v & M{kNoSign, kNoSign, kNoSign, kNoSign, kNoSign, kNoSign, kNoSign, kNoSign}) <=
+         splat(std::numeric_limits<double>::max());
+}
+LENSRT_AVX512 inline V select(M m, V a, V b) {
+  return (V)(((M)a & m) | ((M)b & ~m));
+}
+// Rounded as the current mode says, as the 4-wide one (_MM_FROUND_CUR_DIRECTION: 4).
+LENSRT_AVX512 inline V sqrt(V v) {
+#if defined(__clang__)
+  return __builtin_ia32_sqrtpd512(v, 4);
+#else
+  return __builtin_ia32_sqrtpd512_mask(v, v, 0xff, 4);
+#endif
+}
+
+}  // namespace lensrt::avx512
+
 #endif

@@ -444,15 +444,18 @@ void LensSystem::traceFromFilmVectorized(std::span<const LensRay> rays, std::spa
                                          std::span<std::optional<LensRay>> out) const {
   static_assert(kTraceLanes == trace_lanes::kLanes);
   const std::vector<trace_lanes::Sphere>& spheres = spheres_;
+  // Zeroed once, not per batch: a batch fills its lanes, and those past its
+  // end stay dead (their values, zeros or an earlier batch's, are never read).
+  trace_lanes::Lanes L;
   for (std::size_t first = 0; first < rays.size(); first += kTraceLanes) {
     const std::size_t lanes = std::min(kTraceLanes, rays.size() - first);
-    trace_lanes::Lanes L;  // lanes past `lanes` stay dead
     for (std::size_t l = 0; l < lanes; ++l) {
       const LensRay& r = rays[first + l];
       L.ox[l] = r.origin.x, L.oy[l] = r.origin.y, L.oz[l] = r.origin.z;
       L.dx[l] = r.direction.x, L.dy[l] = r.direction.y, L.dz[l] = r.direction.z;
       L.alive[l] = ~0ll;
     }
+    std::fill(L.alive.begin() + std::ptrdiff_t(lanes), L.alive.end(), 0ll);
     trace_lanes::start(L);  // validInput<true> and normalize
     // Per lane: the index on the film side of the next surface (trace()'s nFrom).
     const bool spectral = !wavelengthsNm.empty();

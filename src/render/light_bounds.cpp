@@ -35,6 +35,39 @@ ImportanceBounds::ImportanceBounds(const LightBounds& b)
       cosThetaE(b.cosThetaE),
       twoSided(b.twoSided) {}
 
+ImportancePair::ImportancePair(const ImportanceBounds& a, const ImportanceBounds& b) {
+  const auto both = [](Lanes& lanes, float x, float y) { lanes = {x, y, x, y}; };
+  both(cx, a.centre.x, b.centre.x);
+  both(cy, a.centre.y, b.centre.y);
+  both(cz, a.centre.z, b.centre.z);
+  both(radius2, a.radius2, b.radius2);
+  both(radius, a.radius, b.radius);
+  both(phi, a.phi, b.phi);
+  both(ax, a.axis.x, b.axis.x);
+  both(ay, a.axis.y, b.axis.y);
+  both(az, a.axis.z, b.axis.z);
+  both(cosThetaO, a.cosThetaO, b.cosThetaO);
+  both(sinThetaO, a.sinThetaO, b.sinThetaO);
+  both(cosThetaE, a.cosThetaE, b.cosThetaE);
+  const std::int32_t sidesA = a.twoSided ? -1 : 0, sidesB = b.twoSided ? -1 : 0;
+  twoSided = {sidesA, sidesB, sidesA, sidesB};
+}
+
+ImportanceBounds ImportancePair::bounds(int k) const {
+  const std::size_t i = std::size_t(k);
+  ImportanceBounds b;
+  b.centre = {cx[i], cy[i], cz[i]};
+  b.radius2 = radius2[i];
+  b.radius = radius[i];
+  b.phi = phi[i];
+  b.axis = {ax[i], ay[i], az[i]};
+  b.cosThetaO = cosThetaO[i];
+  b.sinThetaO = sinThetaO[i];
+  b.cosThetaE = cosThetaE[i];
+  b.twoSided = twoSided[i] != 0;
+  return b;
+}
+
 LightBounds unite(const LightBounds& a, const LightBounds& b) {
   if (!(a.phi > 0)) return b;
   if (!(b.phi > 0)) return a;

@@ -7,8 +7,16 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+
+#if defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#include <xmmintrin.h>
+#define LENSRT_IMPORTANCE_SSE 1
+#endif
 
 #include "core/bounds.h"
 #include "core/vec.h"
@@ -119,5 +127,103 @@ inline float ImportanceBounds::importance(const Vec3f& p, const Vec3f& n) const 
   // Finite, so that two children's importances always add up.
   return std::clamp(result, 0.0f, std::numeric_limits<float>::max());
 }
+
+// Two ImportanceBounds as importancePair reads them: each value of the two
+// side by side (lanes 0 and 1, again in 2 and 3), so that a value of both is
+// one load. The tree keeps one per inner node, for its children.
+struct ImportancePair {
+  ImportancePair() = default;
+  ImportancePair(const ImportanceBounds& a, const ImportanceBounds& b);
+  // ImportanceBounds k (0 or 1) back.
+  ImportanceBounds bounds(int k) const;
+
+  using Lanes = std::array<float, 4>;
+  alignas(16) Lanes cx{}, cy{}, cz{}, radius2{}, radius{}, phi{};
+  alignas(16) Lanes ax{}, ay{}, az{}, cosThetaO{}, sinThetaO{}, cosThetaE{};
+  alignas(16) std::array<std::int32_t, 4> twoSided{};  // all bits set where two-sided
+};
+
+// importance() of both bounds of a pair for one point: the light tree's walk
+// weighs both children at every level. Lane by lane in SSE registers the same
+// operations in the same order as importance() (its branches become
+// selects), so the same bits; elsewhere the two calls.
+#if LENSRT_IMPORTANCE_SSE
+namespace lightBoundsDetail {
+using F4 = float __attribute__((vector_size(16)));
+using M4 = std::int32_t __attribute__((vector_size(16)));
+inline F4 splat(float x) {
+  return F4{x, x, x, x};
+}
+inline F4 load(const ImportancePair::Lanes& a) {
+  F4 v;
+  std::memcpy(&v, a.data(), sizeof v);
+  return v;
+}
+inline F4 select(M4 m, F4 x, F4 y) {
+  return (F4)(((M4)x & m) | ((M4)y & ~m));
+}
+inline F4 sqrt(F4 x) {
+  return (F4)_mm_sqrt_ps((__m128)x);
+}
+inline F4 abs(F4 x) {
+  return (F4)((M4)x & M4{0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff});
+}
+// sinFromCos: std::max(0.0f, v) is (0 < v ? v : 0).
+inline F4 sinFromCos(F4 c) {
+  const F4 v = splat(1) - c * c;
+  return sqrt(select(splat(0) < v, v, splat(0)));
+}
+}  // namespace lightBoundsDetail
+
+inline std::array<float, 2> importancePair(const ImportancePair& b, const Vec3f& p, const Vec3f& n) {
+  using namespace lightBoundsDetail;
+  const F4 zero = splat(0), one = splat(1);
+  const F4 fx = splat(p.x) - load(b.cx), fy = splat(p.y) - load(b.cy), fz = splat(p.z) - load(b.cz);
+  const F4 dist2 = fx * fx + fy * fy + fz * fz;
+  const F4 radius2 = load(b.radius2), radius = load(b.radius);
+  // std::max({dist2, radius2, 1e-12f}): the first of the largest.
+  F4 d2 = select(dist2 < radius2, radius2, dist2);
+  d2 = select(d2 < splat(1e-12f), splat(1e-12f), d2);
+  const F4 dist = sqrt(dist2);
+  const M4 positive = dist > zero;
+  const F4 invDist = select(positive, one / dist, zero);
+  const F4 wx = select(positive, fx * invDist, zero), wy = select(positive, fy * invDist, zero),
+           wz = select(positive, fz * invDist, one);
+  // theta_b; std::min(1.0f, s) is (s < 1 ? s : 1).
+  const M4 outside = dist2 > radius2, extended = outside & (radius > zero);
+  const F4 s = radius * invDist;
+  const F4 sinThetaB = select(extended, select(s < one, s, one), zero);
+  const F4 cosThetaB = select(outside, select(extended, sinFromCos(sinThetaB), one), splat(-1));
+  // theta_w, theta_x, theta_p.
+  F4 cosThetaW = load(b.ax) * wx + load(b.ay) * wy + load(b.az) * wz;
+  M4 twoSided;
+  std::memcpy(&twoSided, b.twoSided.data(), sizeof twoSided);
+  cosThetaW = select(twoSided, abs(cosThetaW), cosThetaW);
+  const F4 cosThetaO = load(b.cosThetaO), sinThetaO = load(b.sinThetaO);
+  const M4 inCone = cosThetaW > cosThetaO;
+  const F4 sinThetaW = sinFromCos(cosThetaW);
+  const F4 cosThetaX = select(inCone, one, cosThetaW * cosThetaO + sinThetaW * sinThetaO);
+  const F4 sinThetaX = select(inCone, zero, sinThetaW * cosThetaO - cosThetaW * sinThetaO);
+  const F4 cosThetaP = select(cosThetaX > cosThetaB, one, cosThetaX * cosThetaB + sinThetaX * sinThetaB);
+  F4 result = load(b.phi) * cosThetaP / d2;
+  if (n.x != 0 || n.y != 0 || n.z != 0) {
+    // The receiver's cosine; a factor of 1 where importance() multiplies by nothing.
+    const F4 cosThetaI = abs(wx * splat(n.x) + wy * splat(n.y) + wz * splat(n.z));
+    const F4 point = select(cosThetaB > zero, cosThetaI, one);
+    const F4 extent =
+        select(cosThetaI > cosThetaB, one, cosThetaI * cosThetaB + sinFromCos(cosThetaI) * sinThetaB);
+    result = result * select(sinThetaB == zero, point, extent);
+  }
+  // std::clamp(result, 0, max) is (v < 0 ? 0 : max < v ? max : v); 0 outside the emission.
+  const F4 largest = splat(std::numeric_limits<float>::max());
+  result = select(result < zero, zero, select(largest < result, largest, result));
+  result = select(cosThetaP <= load(b.cosThetaE), zero, result);
+  return {result[0], result[1]};
+}
+#else
+inline std::array<float, 2> importancePair(const ImportancePair& b, const Vec3f& p, const Vec3f& n) {
+  return {b.bounds(0).importance(p, n), b.bounds(1).importance(p, n)};
+}
+#endif
 
 }  // namespace lensrt

@@ -77,7 +77,7 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
       depth_[e.light] = std::uint8_t(depth);
     }
     leafPhiTotal_.insert(leafPhiTotal_.end(), end - begin, total);
-    nodes_.push_back({ImportanceBounds(all), first, std::uint32_t(end - begin)});
+    nodes_.push_back({ImportanceBounds(all), first, std::uint32_t(end - begin), {}});
     return;
   }
   const Vec3f extent = all.bounds.diagonal();
@@ -143,10 +143,11 @@ void LightTree::build(std::vector<Entry>& entries, std::size_t begin, std::size_
   if (mid == begin || mid == end) mid = begin + (end - begin) / 2;
 
   const std::size_t node = nodes_.size();
-  nodes_.push_back({ImportanceBounds(all), 0, 0});
+  nodes_.push_back({ImportanceBounds(all), 0, 0, {}});
   build(entries, begin, mid, trail, depth + 1);
   nodes_[node].childOrFirst = std::uint32_t(nodes_.size());
   build(entries, mid, end, trail | (std::uint64_t{1} << depth), depth + 1);
+  nodes_[node].children = ImportancePair(nodes_[node + 1].bounds, nodes_[nodes_[node].childOrFirst].bounds);
 }
 
 bool LightTree::flatPatch(const std::vector<Entry>& entries, std::size_t begin, std::size_t end,
@@ -183,7 +184,7 @@ std::optional<LightPick> LightTree::sample(const Vec3f& p, const Vec3f& n, float
   float pmf = 1;
   while (!nodes_[i].leaf()) {
     const std::size_t c0 = i + 1, c1 = nodes_[i].childOrFirst;
-    const float i0 = nodes_[c0].bounds.importance(p, n), i1 = nodes_[c1].bounds.importance(p, n);
+    const auto [i0, i1] = importancePair(nodes_[i].children, p, n);
     if (!(i0 > 0) && !(i1 > 0)) return std::nullopt;
     const float p0 = firstChildProbability(i0, i1);
     if (u < double(p0)) {
@@ -216,7 +217,7 @@ float LightTree::pmf(const Vec3f& p, const Vec3f& n, std::size_t light) const {
   float pmf = 1;
   for (int depth = 0; !nodes_[i].leaf(); ++depth) {
     const std::size_t c0 = i + 1, c1 = nodes_[i].childOrFirst;
-    const float i0 = nodes_[c0].bounds.importance(p, n), i1 = nodes_[c1].bounds.importance(p, n);
+    const auto [i0, i1] = importancePair(nodes_[i].children, p, n);
     if (!(i0 > 0) && !(i1 > 0)) return 0;
     const float p0 = firstChildProbability(i0, i1);
     if ((trail >> depth) & 1) {

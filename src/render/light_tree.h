@@ -57,6 +57,8 @@ class LightTree {
     // (its first is the next node).
     std::uint32_t childOrFirst = 0;
     std::uint32_t count = 0;  // a leaf's lights; 0 for an inner node
+    // An inner node's children's bounds, as the walk weighs them.
+    ImportancePair children;
     bool leaf() const { return count > 0; }
   };
   struct Entry {

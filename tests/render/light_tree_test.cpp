@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -128,6 +130,39 @@ TEST(LightTree, PmfIsPositiveForEveryLightThatCanReachThePointAndEqualsWhatSampl
   // Injected bugs (measured): sample() reporting i1 / (i0 + i0) for the
   // second child instead of one minus the first's: 0.0866 against 0.0579 at
   // the first point; pmf() reading the trail from its top bit: the sum 8.1.
+}
+
+// The tree's walk weighs both children with importancePair (in SSE lanes on
+// x86-64): the very bits of importance() on each, for every kind of bounds
+// (points, cones, two-sided patches, boxes the point is inside), with and
+// without a receiver's normal, and for a point at a light's centre.
+TEST(LightTree, ImportancePairHasTheBitsOfImportance) {
+  std::vector<LightBounds> lights = streetLights(300, 5);
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> u(0, 1);
+  // Large boxes as well, which many points are inside.
+  for (int i = 0; i < 100; ++i) {
+    LightBounds b = lights[std::size_t(i)];
+    b.bounds.extend(Vec3f{20 * u(rng) - 10, 4 * u(rng), 20 * u(rng) - 10});
+    b.cosThetaO = 2 * u(rng) - 1;
+    b.cosThetaE = u(rng) < 0.5f ? 0.0f : std::cos(1.5f * u(rng));
+    lights.push_back(b);
+  }
+  std::vector<ImportanceBounds> bounds;
+  for (const LightBounds& b : lights) bounds.emplace_back(b);
+  int lit = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const ImportanceBounds& a = bounds[std::size_t(k) % bounds.size()];
+    const ImportanceBounds& b = bounds[std::size_t(k * 7 + 3) % bounds.size()];
+    const Vec3f p = k % 50 == 0 ? a.centre : Vec3f{24 * u(rng) - 12, 5 * u(rng) - 1, 24 * u(rng) - 12};
+    const Vec3f n = k % 4 == 3 ? Vec3f{0, 0, 0} : randomUnit(rng);
+    const std::array<float, 2> pair = importancePair(ImportancePair(a, b), p, n);
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(pair[0]), std::bit_cast<std::uint32_t>(a.importance(p, n))) << k;
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(pair[1]), std::bit_cast<std::uint32_t>(b.importance(p, n))) << k;
+    lit += pair[0] > 0;
+  }
+  EXPECT_GT(lit, 1000);
+  EXPECT_LT(lit, 3990);  // some dark: behind a cone, or beyond its emission
 }
 
 TEST(LightTree, LightsWithoutPowerAreNeverPicked) {
