@@ -77,9 +77,9 @@ class RenderJob {
 
   // --flare on with the full lens: the light pass (render/flare_light_pass.h)
   // of the scene's punctual lights, still emitters and environment sun for
-  // these settings; none otherwise. spp x pixels / 4 paths a light and for
-  // the sun (at least 65 536), as many for each emissive instance (at most
-  // 8 times as many for them all), from the render's seed. Camera paths of
+  // these settings; none otherwise. spp x pixels / 4 paths (at least
+  // 65 536) for each light, the emitters together and the sun, from the
+  // render's seed. Camera paths of
   // a flare camera skip these sources after a lens reflection, so every
   // render of one adds this image.
   std::shared_ptr<const FlareImage> flareLight(const Camera& camera, const RenderSettings& settings) const;

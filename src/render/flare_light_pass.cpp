@@ -96,8 +96,7 @@ std::optional<LensLight> lensLight(const LensFrame& frame, const PunctualLight& 
 // triangle that may send light in goes without paths (unbiased whatever the
 // estimate). Zero only where no path could start: behind the front vertex
 // plane, or single-sided and facing away from the whole disc.
-std::vector<float> emitterWeights(const LensFrame& frame, const LightSet& lights, double discRadiusMm,
-                                  std::size_t& instances) {
+std::vector<float> emitterWeights(const LensFrame& frame, const LightSet& lights, double discRadiusMm) {
   std::vector<float> weights(lights.emissiveTriangleCount(), 0.0f);
   const Vec3f centre = frame.worldOf({0, 0, 0});
   const Vec3f axis = normalize(frame.worldOf({0, 0, -1}) - centre);  // toward the scene
@@ -122,12 +121,6 @@ std::vector<float> emitterWeights(const LensFrame& frame, const LightSet& lights
     }
     weights[t] = tri.luminance * g;
   }
-  // The instances among them: the emitters' share of paths.
-  std::vector<int> seen;
-  for (std::size_t t = 0; t < weights.size(); ++t)
-    if (weights[t] > 0) seen.push_back(lights.emissiveTriangle(t).instance);
-  std::sort(seen.begin(), seen.end());
-  instances = std::size_t(std::unique(seen.begin(), seen.end()) - seen.begin());
   return weights;
 }
 
@@ -138,6 +131,13 @@ struct Source {
   LensLight light;  // Punctual
   std::uint64_t paths = 0;
   bool reflectedOnly = false;  // deposit only paths with a lens reflection
+};
+
+// A path's shadow ray: from its disc point (world) toward its source point,
+// or toward a direction (distance infinite).
+struct Shadow {
+  Vec3f from, direction;
+  float distance = kInfinityF;
 };
 
 struct Deposit {
@@ -173,18 +173,10 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
     }
     sources.push_back(s);  // an unseen light keeps its index, as before
   }
-  std::vector<float> triangleWeights;
   Distribution1D trianglePick;
   if (scene.emitters && scene.emitters->emissiveTriangleCount() > 0) {
-    std::size_t instances = 0;
-    triangleWeights = emitterWeights(frame, *scene.emitters, discRadius, instances);
-    trianglePick = Distribution1D(triangleWeights);
-    if (!trianglePick.empty())
-      sources.push_back({Source::Kind::Emitters,
-                         {},
-                         paths * std::uint64_t(std::clamp<std::size_t>(
-                                     instances, 1, std::size_t(std::max(1, scene.maxEmitterShares)))),
-                         true});
+    trianglePick = Distribution1D(emitterWeights(frame, *scene.emitters, discRadius));
+    if (!trianglePick.empty()) sources.push_back({Source::Kind::Emitters, {}, paths, true});
   }
   if (scene.environment && scene.environment->hasSun())
     sources.push_back({Source::Kind::Sun, {}, paths, true});
@@ -200,10 +192,11 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   const int arenaThreads = threads > 0 ? threads : tbb::task_arena::automatic;
   tbb::task_arena arena(arenaThreads);
   // Is the segment from the disc point (world) toward the source open?
-  const auto visible = [&](const Vec3f& from, const Vec3f& direction, float distance) {
+  const auto visible = [&](const Shadow& shadow) {
     if (!scene.geometry) return true;
-    Ray ray{from, direction, 0.0f, kInfinityF, 0.0f};
-    if (std::isfinite(distance)) ray.tMax = distance * (1 - 1e-4f);  // short of the source's own surface
+    Ray ray{shadow.from, shadow.direction, 0.0f, kInfinityF, 0.0f};
+    if (std::isfinite(shadow.distance))
+      ray.tMax = shadow.distance * (1 - 1e-4f);  // short of the source's own surface
     return !scene.geometry->occluded(ray);
   };
   for (std::size_t si = 0; si < sources.size(); ++si) {
@@ -225,6 +218,9 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         LensRay ray;
         double irradiance = 0.0;  // across the disc's plane at the target, per unit of `emitted`
         Rgb emitted;              // intensity (point), irradiance (directional) or radiance
+        // From the disc point (world) toward the source: tested only for a
+        // path that deposits (most do not), as it takes no random number.
+        Shadow shadow;
         switch (source.kind) {
           case Source::Kind::Punctual: {
             const LensLight& light = source.light;
@@ -239,15 +235,13 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
               ray = {light.point, d};
               irradiance = (d.z / std::sqrt(r2)) / (r2 * 1e-6);  // cos / r^2, r in metres
             }
-            if (scene.geometry) {
-              const Vec3f from = frame.worldOf(target);
-              if (light.atInfinity) {
-                if (!visible(from, light.world, kInfinityF)) continue;
-              } else {
-                const Vec3f d = light.world - from;
-                const float distance = length(d);
-                if (!(distance > 0.0f) || !visible(from, d / distance, distance)) continue;
-              }
+            if (light.atInfinity) {
+              shadow = {frame.worldOf(target), light.world, kInfinityF};
+            } else {
+              const Vec3f from = frame.worldOf(target), d = light.world - from;
+              const float distance = length(d);
+              if (!(distance > 0.0f)) continue;
+              shadow = {from, d / distance, distance};
             }
             break;
           }
@@ -266,7 +260,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
             ray = {point, d};
             irradiance = (d.z / length(d)) / (double(ls->pdf) * double(trianglePick.probability(t)));
             emitted = ls->radiance;
-            if (!visible(from, ls->wi, ls->distance)) continue;
+            shadow = {from, ls->wi, ls->distance};
             break;
           }
           case Source::Kind::Sun: {
@@ -279,7 +273,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
             ray = {target - travel * ((discRadius + 10.0) / travel.z), travel};
             irradiance = travel.z / double(es->pdf);
             emitted = es->radiance;
-            if (!visible(from, es->direction, kInfinityF)) continue;
+            shadow = {from, es->direction, kInfinityF};
             break;
           }
         }
@@ -312,6 +306,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         const Vec2d raster = rasterOfUprightSensorPointMm(film, upright);
         if (!(raster.x >= 0.0 && raster.y >= 0.0 && raster.x < film.width && raster.y < film.height))
           continue;
+        if (!visible(shadow)) continue;
         const auto pixel = std::uint32_t(int(raster.y) * film.width + int(raster.x));
         const double w = share * irradiance * t.ray.transmittance;
         out.push_back({pixel, Vec3d(colour) * w});

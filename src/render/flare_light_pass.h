@@ -77,13 +77,12 @@ struct FlareScene {
   const RenderScene* geometry = nullptr;     // the shadow rays; none: nothing hides a source
   const LightSet* emitters = nullptr;        // its still emissive triangles; none: no emitter
   const Environment* environment = nullptr;  // its sun; none: no sun
-  // The emitters' paths: `paths` times the number of emissive instances
-  // that may send light into the lens, at most this many times.
-  int maxEmitterShares = 8;
 };
 
 // `lights` in world space; a light behind the front vertex or pointing away
-// (a spot's cone) adds nothing. `paths` a punctual light and the sun. The
+// (a spot's cone) adds nothing. `paths` for each punctual light, for the
+// still emitters together (as many as for one light: each of their paths
+// costs a whole lens trace, and few reflect) and for the sun. The
 // camera must have flare on (LensCameraParams::flareReflections).
 // `response`: spectral transport's film (RenderSettings::filmResponse), each
 // path at its own wavelengths as a camera sample's; none: RGB. `threads` 0:
