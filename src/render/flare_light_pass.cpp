@@ -171,7 +171,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
       s.light = *light;
       s.paths = paths;
     }
-    sources.push_back(s);  // an unseen light keeps its index, as before
+    sources.push_back(s);  // an unseen light keeps its index (its streams' key), with no path
   }
   Distribution1D trianglePick;
   if (scene.emitters && scene.emitters->emissiveTriangleCount() > 0) {
