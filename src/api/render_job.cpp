@@ -240,32 +240,16 @@ std::shared_ptr<const FlareImage> RenderJob::flareLight(const Camera& camera,
                                                         const RenderSettings& settings) const {
   const auto* lens = dynamic_cast<const LensCamera*>(&camera);
   if (!lens || !lens->flare()) return nullptr;
-  // The lights the lens sees: a shadow ray from the entrance pupil (the
-  // camera's origin) to each.
-  const Vec3f eye = camera.worldFromCamera().point(Vec3f{0, 0, 0});
-  std::vector<PunctualLight> seen;
-  for (const PunctualLight& l : scene_->geometry().desc().lights) {
-    Ray ray;
-    ray.origin = eye;
-    if (l.type == PunctualLight::Type::Directional) {
-      ray.direction = -l.direction;
-    } else {
-      const Vec3f d = l.position - eye;
-      const float distance = length(d);
-      if (!(distance > 0.0f)) continue;
-      ray.direction = d / distance;
-      ray.tMax = distance * (1.0f - 1e-4f);
-    }
-    if (!scene_->geometry().occluded(ray)) seen.push_back(l);
-  }
-  if (seen.empty()) return nullptr;
+  // Every punctual light, the still emitters and the environment's sun; each
+  // path's shadow ray says whether the scene hides its source from the lens.
+  const FlareScene sources{&scene_->geometry(), lights_.get(), environment_.get()};
   const FilmGeometry& film = camera.film();
   const std::uint64_t paths =
       std::max<std::uint64_t>(65536, std::uint64_t(std::max(1, settings.samplesPerPixel)) *
                                          std::uint64_t(film.width) * std::uint64_t(film.height) / 4);
-  return std::make_shared<const FlareImage>(flareLightPass(*lens, seen, paths, settings.seed,
-                                                           settings.filmResponse.get(), settings.threads,
-                                                           settings.aovs.variance));
+  return std::make_shared<const FlareImage>(
+      flareLightPass(*lens, scene_->geometry().desc().lights, paths, settings.seed,
+                     settings.filmResponse.get(), settings.threads, settings.aovs.variance, sources));
 }
 
 ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& settings) const {

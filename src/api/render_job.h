@@ -75,10 +75,13 @@ class RenderJob {
   // Renders with a progress bar on stderr unless `quiet`.
   RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
 
-  // --flare on with the full lens: the light pass of the scene's punctual
-  // lights (render/flare_light_pass.h) for these settings, each light the
-  // scene hides from the lens's entrance pupil left out; none otherwise.
-  // spp x pixels / 4 paths a light (at least 65 536), from the render's seed.
+  // --flare on with the full lens: the light pass (render/flare_light_pass.h)
+  // of the scene's punctual lights, still emitters and environment sun for
+  // these settings; none otherwise. spp x pixels / 4 paths (at least
+  // 65 536) for each light, the emitters together and the sun, from the
+  // render's seed. Camera paths of
+  // a flare camera skip these sources after a lens reflection, so every
+  // render of one adds this image.
   std::shared_ptr<const FlareImage> flareLight(const Camera& camera, const RenderSettings& settings) const;
 
   // Continues `state` to settings.samplesPerPixel in passes steered by

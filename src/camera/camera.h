@@ -37,6 +37,10 @@ struct CameraSample {
 struct CameraRay {
   Ray ray;              // world space, unit direction
   float weight = 1.0f;  // multiplies the radiance: irradiance estimate scaled by exposure
+  // --flare on: the ray reflected in the lens (or scattered off its barrel)
+  // on its way out; the flare light pass takes such paths of the sources it
+  // handles, so the integrator skips those (render/flare_light_pass.h).
+  bool lensReflected = false;
 };
 
 // Radiometry shared by the models (see exposure.h for the exposure modes):

@@ -194,7 +194,9 @@ std::optional<CameraRay> LensCamera::flareRay(const CameraSample& s) const {
   const LensSystem::FlareTrace t =
       lens_->traceFromFilmWithFlare({p, target - p}, flareOptions_, random, wavelength);
   if (t.end != LensSystem::FlareTrace::End::Scene) return std::nullopt;
-  return cameraRay(t.ray, weight);
+  std::optional<CameraRay> out = cameraRay(t.ray, weight);
+  if (out) out->lensReflected = t.reflections > 0;
+  return out;
 }
 
 std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& s) const {

@@ -58,7 +58,72 @@ Environment Environment::latLong(const Image& image) {
   e.averageLuminance_ = sumSin > 0 ? float(sumLum / sumSin) : 0.0f;
   e.averageRadiance_ = sumSin > 0 ? Rgb(sumRgb / sumSin) : Rgb{0, 0, 0};
   e.description_ = "latlong " + std::to_string(e.width_) + "x" + std::to_string(e.height_);
+  e.findSun();
   return e;
+}
+
+void Environment::findSun() {
+  sunTexels_.clear();
+  sunPick_ = Distribution1D();
+  float brightest = 0;
+  for (const Rgb& t : texels_) brightest = std::max(brightest, luminance(t));
+  if (!(brightest > 0)) return;
+  // A texel of row y covers 2 pi / width x (cos theta0 - cos theta1) sr.
+  const auto solidAngle = [&](int y) {
+    return 2 * kPi / width_ * (std::cos(kPi * double(y) / height_) - std::cos(kPi * double(y + 1) / height_));
+  };
+  double covered = 0;
+  std::vector<float> weights;
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      const std::size_t i = std::size_t(y) * width_ + x;
+      const float l = luminance(texels_[i]);
+      if (!(l >= kSunFraction * brightest)) continue;
+      covered += solidAngle(y);
+      if (covered > kSunSolidAngle) {  // wide: no sun
+        sunTexels_.clear();
+        return;
+      }
+      sunTexels_.push_back(std::uint32_t(i));
+      weights.push_back(float(l * solidAngle(y)));
+    }
+  sunPick_ = Distribution1D(weights);
+  if (sunPick_.empty()) sunTexels_.clear();
+}
+
+std::size_t Environment::texelOf(const Vec3f& world) const {
+  const Vec2f uv = directionToUv(toMap(world));
+  const int x = std::min(int(uv.x * float(width_)), width_ - 1);
+  const int y = std::min(int(uv.y * float(height_)), height_ - 1);
+  return std::size_t(y) * width_ + x;
+}
+
+bool Environment::inSun(const Vec3f& direction) const {
+  return hasSun() && std::binary_search(sunTexels_.begin(), sunTexels_.end(), texelOf(direction));
+}
+
+float Environment::pdfSun(const Vec3f& direction) const {
+  if (!hasSun()) return 0;
+  const auto it = std::lower_bound(sunTexels_.begin(), sunTexels_.end(), texelOf(direction));
+  if (it == sunTexels_.end() || *it != texelOf(direction)) return 0;
+  const Vec3f d = toMap(direction);
+  const float sinTheta = std::hypot(d.x, d.z) / length(d);
+  if (!(sinTheta > 0)) return 0;
+  // Uniform in the texel: density width x height in (u, v), over 2 pi^2 sin(theta) per sr.
+  return sunPick_.probability(std::size_t(it - sunTexels_.begin())) * float(width_) * float(height_) /
+         (2 * kPiF * kPiF * sinTheta);
+}
+
+std::optional<EnvironmentSample> Environment::sampleSun(const Vec2f& u) const {
+  if (!hasSun()) return std::nullopt;
+  float uX = 0;
+  const std::uint32_t i = sunTexels_[sunPick_.sample(u.x, &uX)];
+  const int x = int(i % std::uint32_t(width_)), y = int(i / std::uint32_t(width_));
+  const Vec3f d =
+      fromMap(uvToDirection({(float(x) + uX) / float(width_), (float(y) + u.y) / float(height_)}));
+  const float density = pdfSun(d);
+  if (!(density > 0)) return std::nullopt;
+  return EnvironmentSample{d, eval(d), density};
 }
 
 Environment Environment::scaled(float k) const {
@@ -74,6 +139,8 @@ Environment Environment::scaled(float k) const {
     e.black_ = true;
     e.texels_.clear();
     e.distribution_ = Distribution2D();
+    e.sunTexels_.clear();
+    e.sunPick_ = Distribution1D();
   }
   char buf[48];
   std::snprintf(buf, sizeof buf, " intensity %g", double(k));

@@ -14,6 +14,7 @@
 // at +90 degrees what the unrotated map shows at -Z (its centre) appears at -X.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,7 +57,25 @@ class Environment {
   static Vec2f directionToUv(const Vec3f& d);
   static Vec3f uvToDirection(const Vec2f& uv);
 
+  // The sun of a lat-long map, which lens flare's light pass takes
+  // (render/flare_light_pass.h): the texels at least kSunFraction as bright
+  // (luminance) as the brightest, when together they cover at most
+  // kSunSolidAngle sr; none in a constant map or one whose brightest part is
+  // wide (an overcast sky), where camera paths find its ghosts well enough.
+  static constexpr float kSunFraction = 0.01f;
+  static constexpr float kSunSolidAngle = 0.05f;  // a cone of 7.2 degrees half-angle
+  bool hasSun() const { return !sunPick_.empty(); }
+  bool inSun(const Vec3f& direction) const;
+  // A direction in the sun (world, toward it), picked by the texels'
+  // luminance x solid angle, uniform in the texel; its radiance and solid
+  // angle density (from the direction itself, as sample() does).
+  std::optional<EnvironmentSample> sampleSun(const Vec2f& u) const;
+  float pdfSun(const Vec3f& direction) const;
+
  private:
+  // The texel a world direction falls in (a lat-long map).
+  std::size_t texelOf(const Vec3f& world) const;
+  void findSun();
   // World direction to the unrotated map's frame, and back.
   Vec3f toMap(const Vec3f& world) const;
   Vec3f fromMap(const Vec3f& map) const;
@@ -66,6 +85,8 @@ class Environment {
   int width_ = 0, height_ = 0;
   std::vector<Rgb> texels_;
   Distribution2D distribution_;
+  std::vector<std::uint32_t> sunTexels_;  // ascending
+  Distribution1D sunPick_;                // over sunTexels_
   float averageLuminance_ = 0;
   Rgb averageRadiance_{0, 0, 0};
   float cosRotation_ = 1, sinRotation_ = 0;

@@ -5,15 +5,19 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
 
 #include "camera/film_mapping.h"
 #include "core/constants.h"
+#include "core/ray.h"
+#include "render/environment.h"
 #include "render/lights.h"
 #include "render/spectral_response.h"
 #include "render/wavelengths.h"
+#include "scene/render_scene.h"
 
 namespace lensrt {
 
@@ -25,7 +29,7 @@ std::uint64_t mix(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
-// A chunk's stream: SplitMix64 from a key of (seed, light, chunk).
+// A chunk's stream: SplitMix64 from a key of (seed, source, chunk).
 class ChunkStream {
  public:
   ChunkStream(std::uint64_t seed, std::uint64_t light, std::uint64_t chunk)
@@ -43,24 +47,37 @@ struct LensLight {
   Vec3d point;      // lens space, mm (a point light)
   Vec3d direction;  // unit, the way the light travels (directional)
   Rgb intensity;    // W/sr toward the lens (point), or irradiance across the beam (directional)
+  Vec3f world;      // world space: the light's place, or the direction toward it (directional)
 };
 
-std::optional<LensLight> lensLight(const LensCamera& camera, const Transform& cameraFromWorld,
-                                   const PunctualLight& l) {
-  // Lens space: camera space in mm, from the front vertex (camera space's
-  // origin is the entrance pupil; lens space's z runs toward the film).
-  const auto toLens = [&](const Vec3d& cameraPoint) {
-    return Vec3d{cameraPoint.x * 1e3, cameraPoint.y * 1e3, cameraPoint.z * 1e3 + camera.entrancePupilZ()};
-  };
+// Lens space (mm, from the front vertex; z toward the film) from camera
+// space (metres, from the entrance pupil), and back.
+struct LensFrame {
+  const LensCamera& camera;
+  Transform cameraFromWorld;
+  Vec3d toLens(const Vec3d& cameraPoint) const {
+    return {cameraPoint.x * 1e3, cameraPoint.y * 1e3, cameraPoint.z * 1e3 + camera.entrancePupilZ()};
+  }
+  Vec3f worldOf(const Vec3d& lens) const {
+    return Vec3f(camera.worldFromCamera().point(
+        Vec3d{lens.x * 1e-3, lens.y * 1e-3, (lens.z - camera.entrancePupilZ()) * 1e-3}));
+  }
+  Vec3d lensOf(const Vec3f& world) const { return toLens(cameraFromWorld.point(Vec3d(world))); }
+};
+
+std::optional<LensLight> lensLight(const LensFrame& frame, const PunctualLight& l) {
+  const LensCamera& camera = frame.camera;
   LensLight out;
   if (l.type == PunctualLight::Type::Directional) {
     out.atInfinity = true;
-    out.direction = normalize(cameraFromWorld.vector(Vec3d(l.direction)));
+    out.direction = normalize(frame.cameraFromWorld.vector(Vec3d(l.direction)));
     if (!(out.direction.z > 0.0)) return std::nullopt;  // the light travels away from the lens
     out.intensity = l.intensity;
+    out.world = -l.direction;
     return out;
   }
-  out.point = toLens(cameraFromWorld.point(Vec3d(l.position)));
+  out.point = frame.lensOf(l.position);
+  out.world = l.position;
   if (!(out.point.z < 0.0)) return std::nullopt;  // behind the front vertex
   // The spot's cone and the range window, toward the entrance pupil.
   const Vec3f toCamera = Vec3f(camera.worldFromCamera().point(Vec3d{0, 0, 0})) - l.position;
@@ -72,6 +89,57 @@ std::optional<LensLight> lensLight(const LensCamera& camera, const Transform& ca
   return out;
 }
 
+// The still emissive triangles' picking weights: each one's flux into the
+// disc, estimated at its centroid (luminance x area x cosines / d^2), and
+// for a triangle near the lens (closer than twice its size) the most a
+// Lambertian emitter can send (pi sr of projected solid angle), so that no
+// triangle that may send light in goes without paths (unbiased whatever the
+// estimate). Zero only where no path could start: behind the front vertex
+// plane, or single-sided and facing away from the whole disc.
+std::vector<float> emitterWeights(const LensFrame& frame, const LightSet& lights, double discRadiusMm) {
+  std::vector<float> weights(lights.emissiveTriangleCount(), 0.0f);
+  const Vec3f centre = frame.worldOf({0, 0, 0});
+  const Vec3f axis = normalize(frame.worldOf({0, 0, -1}) - centre);  // toward the scene
+  const float discRadius = float(discRadiusMm * 1e-3);
+  for (std::size_t t = 0; t < weights.size(); ++t) {
+    const LightSet::EmissiveTriangle tri = lights.emissiveTriangle(t);
+    if (!tri.still || !(tri.area > 0) || !(tri.luminance > 0)) continue;
+    const std::array<Vec3f, 3> corners{tri.p0, tri.p0 + tri.e1, tri.p0 + tri.e2};
+    if (std::all_of(corners.begin(), corners.end(), [&](const Vec3f& c) { return !(frame.lensOf(c).z < 0); }))
+      continue;
+    if (!tri.twoSided && dot(tri.normal, centre - tri.p0) < -discRadius) continue;
+    const Vec3f q = (corners[0] + corners[1] + corners[2]) / 3.0f;
+    float size = 0;
+    for (const Vec3f& c : corners) size = std::max(size, length(c - q));
+    const Vec3f toLens = centre - q;
+    const float d = length(toLens);
+    float g = kPiF;
+    if (d > 2 * size) {
+      const Vec3f w = toLens / d;
+      const float cosE = std::max(0.05f, std::abs(dot(w, tri.normal))), cosL = std::max(0.05f, -dot(w, axis));
+      g = std::min(kPiF, tri.area * cosE * cosL / (d * d));
+    }
+    weights[t] = tri.luminance * g;
+  }
+  return weights;
+}
+
+// A source of the pass: a punctual light, the still emitters together, or the sun.
+struct Source {
+  enum class Kind { Punctual, Emitters, Sun };
+  Kind kind = Kind::Punctual;
+  LensLight light;  // Punctual
+  std::uint64_t paths = 0;
+  bool reflectedOnly = false;  // deposit only paths with a lens reflection
+};
+
+// A path's shadow ray: from its disc point (world) toward its source point,
+// or toward a direction (distance infinite).
+struct Shadow {
+  Vec3f from, direction;
+  float distance = kInfinityF;
+};
+
 struct Deposit {
   std::uint32_t pixel;
   Vec3d value;
@@ -81,63 +149,140 @@ struct Deposit {
 
 FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLight> lights,
                           std::uint64_t paths, std::uint64_t seed, const FilmResponse* response, int threads,
-                          bool withVariance) {
+                          bool withVariance, const FlareScene& scene) {
   const FilmGeometry& film = camera.film();
   const std::size_t pixelCount = std::size_t(film.width) * std::size_t(film.height);
   FlareImage image{film.width, film.height, std::vector<Rgb>(pixelCount, Rgb{}),
                    std::vector<Rgb>(withVariance ? pixelCount : 0, Rgb{})};
-  if (paths == 0 || lights.empty()) return image;
+  if (paths == 0) return image;
   const LensSystem& lens = camera.lens();
   const LensSystem::FlareOptions& options = camera.flareOptions();
-  const Transform cameraFromWorld = camera.worldFromCamera().inverse();
+  const LensFrame frame{camera, camera.worldFromCamera().inverse()};
   const double discRadius = 1.2 * lens.frontApertureRadius();
   const double discArea = kPi * discRadius * discRadius;  // mm^2
   const double pixelArea = (film.sensorWidthMm / film.width) * (film.sensorHeightMm / film.height);
   const bool dispersive = camera.tracesWavelengths();
-  const std::uint64_t chunks = (paths + kFlareChunk - 1) / kFlareChunk;
+
+  // The sources, in a fixed order (their index keys their random streams).
+  std::vector<Source> sources;
+  for (const PunctualLight& l : lights) {
+    Source s;
+    if (const std::optional<LensLight> light = lensLight(frame, l)) {
+      s.light = *light;
+      s.paths = paths;
+    }
+    sources.push_back(s);  // an unseen light keeps its index (its streams' key), with no path
+  }
+  Distribution1D trianglePick;
+  if (scene.emitters && scene.emitters->emissiveTriangleCount() > 0) {
+    trianglePick = Distribution1D(emitterWeights(frame, *scene.emitters, discRadius));
+    if (!trianglePick.empty()) sources.push_back({Source::Kind::Emitters, {}, paths, true});
+  }
+  if (scene.environment && scene.environment->hasSun())
+    sources.push_back({Source::Kind::Sun, {}, paths, true});
+
   std::vector<Vec3d> sums(pixelCount, Vec3d{});
-  // The deposits' squares, and one light's own sum (its variance needs it):
+  // The deposits' squares, and one source's own sum (its variance needs it):
   // only when asked, as they triple the memory.
-  std::vector<Vec3d> variances(withVariance ? pixelCount : 0), lightSums(withVariance ? pixelCount : 0);
+  std::vector<Vec3d> variances(withVariance ? pixelCount : 0), sourceSums(withVariance ? pixelCount : 0);
   // Chunks run kGroup at a time, so the deposits held at once stay bounded
-  // (kGroup x kFlareChunk paths) however many paths a light takes.
+  // (kGroup x kFlareChunk paths) however many paths a source takes.
   constexpr std::uint64_t kGroup = 64;
-  std::vector<std::vector<Deposit>> deposits(static_cast<std::size_t>(std::min(chunks, kGroup)));
+  std::vector<std::vector<Deposit>> deposits(static_cast<std::size_t>(kGroup));
   const int arenaThreads = threads > 0 ? threads : tbb::task_arena::automatic;
   tbb::task_arena arena(arenaThreads);
-  for (std::size_t li = 0; li < lights.size(); ++li) {
-    const std::optional<LensLight> light = lensLight(camera, cameraFromWorld, lights[li]);
-    if (!light) continue;
-    std::fill(lightSums.begin(), lightSums.end(), Vec3d{});
+  // Is the segment from the disc point (world) toward the source open?
+  const auto visible = [&](const Shadow& shadow) {
+    if (!scene.geometry) return true;
+    Ray ray{shadow.from, shadow.direction, 0.0f, kInfinityF, 0.0f};
+    if (std::isfinite(shadow.distance))
+      ray.tMax = shadow.distance * (1 - 1e-4f);  // short of the source's own surface
+    return !scene.geometry->occluded(ray);
+  };
+  for (std::size_t si = 0; si < sources.size(); ++si) {
+    const Source& source = sources[si];
+    if (source.paths == 0) continue;
+    std::fill(sourceSums.begin(), sourceSums.end(), Vec3d{});
     // Each path's share of the flux through the disc, in film units per
     // pixel: the exposure scale times irradiance (flux over pixel area).
-    const double share = camera.exposureScale() * discArea / double(paths) / pixelArea;
+    const double share = camera.exposureScale() * discArea / double(source.paths) / pixelArea;
+    const std::uint64_t chunks = (source.paths + kFlareChunk - 1) / kFlareChunk;
     const auto runChunk = [&](std::uint64_t c) {
-      ChunkStream random(seed, li, c);
+      ChunkStream random(seed, si, c);
       std::vector<Deposit>& out = deposits[std::size_t(c % kGroup)];
       out.clear();
-      const std::uint64_t end = std::min(paths, (c + 1) * kFlareChunk);
+      const std::uint64_t end = std::min(source.paths, (c + 1) * kFlareChunk);
       for (std::uint64_t k = c * kFlareChunk; k < end; ++k) {
         const double rho = discRadius * std::sqrt(random()), phi = 2.0 * kPi * random();
         const Vec3d target{rho * std::cos(phi), rho * std::sin(phi), 0.0};
         LensRay ray;
-        double irradiance = 0.0;  // across the disc's plane at the target, per unit intensity
-        if (light->atInfinity) {
-          // Started in front of the lens: a front surface bulges at most its radius.
-          ray = {target - light->direction * ((discRadius + 10.0) / light->direction.z), light->direction};
-          irradiance = light->direction.z;
-        } else {
-          const Vec3d d = target - light->point;
-          const double r2 = lengthSquared(d);
-          ray = {light->point, d};
-          irradiance = (d.z / std::sqrt(r2)) / (r2 * 1e-6);  // cos / r^2, r in metres
+        double irradiance = 0.0;  // across the disc's plane at the target, per unit of `emitted`
+        Rgb emitted;              // intensity (point), irradiance (directional) or radiance
+        // From the disc point (world) toward the source: tested only for a
+        // path that deposits (most do not), as it takes no random number.
+        Shadow shadow;
+        switch (source.kind) {
+          case Source::Kind::Punctual: {
+            const LensLight& light = source.light;
+            emitted = light.intensity;
+            if (light.atInfinity) {
+              // Started in front of the lens: a front surface bulges at most its radius.
+              ray = {target - light.direction * ((discRadius + 10.0) / light.direction.z), light.direction};
+              irradiance = light.direction.z;
+            } else {
+              const Vec3d d = target - light.point;
+              const double r2 = lengthSquared(d);
+              ray = {light.point, d};
+              irradiance = (d.z / std::sqrt(r2)) / (r2 * 1e-6);  // cos / r^2, r in metres
+            }
+            if (light.atInfinity) {
+              shadow = {frame.worldOf(target), light.world, kInfinityF};
+            } else {
+              const Vec3f from = frame.worldOf(target), d = light.world - from;
+              const float distance = length(d);
+              if (!(distance > 0.0f)) continue;
+              shadow = {from, d / distance, distance};
+            }
+            break;
+          }
+          case Source::Kind::Emitters: {
+            // A triangle by its flux into the disc, a point uniform on it
+            // (density per solid angle at the disc point).
+            const Vec3f from = frame.worldOf(target);
+            float uPick = 0.0f;
+            const std::size_t t = trianglePick.sample(float(random()), &uPick);
+            const Vec2f u{uPick, float(random())};
+            const std::optional<LightSample> ls = scene.emitters->sampleEmissiveTriangle(t, from, u);
+            if (!ls || !(ls->pdf > 0.0f)) continue;
+            const Vec3d point = frame.lensOf(from + ls->wi * ls->distance);
+            if (!(point.z < 0.0)) continue;  // behind the front vertex
+            const Vec3d d = target - point;
+            ray = {point, d};
+            irradiance = (d.z / length(d)) / (double(ls->pdf) * double(trianglePick.probability(t)));
+            emitted = ls->radiance;
+            shadow = {from, ls->wi, ls->distance};
+            break;
+          }
+          case Source::Kind::Sun: {
+            const Vec3f from = frame.worldOf(target);
+            const std::optional<EnvironmentSample> es =
+                scene.environment->sampleSun({float(random()), float(random())});
+            if (!es) continue;
+            const Vec3d travel = normalize(frame.cameraFromWorld.vector(-Vec3d(es->direction)));
+            if (!(travel.z > 0.0)) continue;  // behind the lens
+            ray = {target - travel * ((discRadius + 10.0) / travel.z), travel};
+            irradiance = travel.z / double(es->pdf);
+            emitted = es->radiance;
+            shadow = {from, es->direction, kInfinityF};
+            break;
+          }
         }
         double wavelength = kWavelengthDNm;
-        // The light's colour on the film as the renderer takes a camera
+        // The source's colour on the film as the renderer takes a camera
         // sample's: spectral transport through the film's response (the
         // lens at the hero wavelength when it disperses), or RGB with one
         // wavelength weighted into the channels when the lens disperses.
-        Rgb colour = light->intensity;
+        Rgb colour = emitted;
         const float uWavelength = float(random());
         if (response) {
           SampledWavelengths lambdas = SampledWavelengths::sample(uWavelength, *response);
@@ -145,7 +290,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
             wavelength = lambdas.hero();
             lambdas.terminateSecondary();
           }
-          colour = lambdas.toFilm(lambdas.illuminant(light->intensity));
+          colour = lambdas.toFilm(lambdas.illuminant(emitted));
         } else if (dispersive) {
           const WavelengthSample ws = sampleWavelength(uWavelength);
           wavelength = ws.wavelengthNm;
@@ -153,12 +298,15 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         }
         const LensSystem::FlareTrace t = lens.traceFromSceneWithFlare(ray, options, random, wavelength);
         if (t.end != LensSystem::FlareTrace::End::Film) continue;
+        // The direct image of an emitter or the sun is the camera paths'.
+        if (source.reflectedOnly && t.reflections == 0) continue;
         const double s = (camera.filmZ() - t.ray.origin.z) / t.ray.direction.z;
         const Vec2d upright{-(t.ray.origin.x + s * t.ray.direction.x),
                             -(t.ray.origin.y + s * t.ray.direction.y)};
         const Vec2d raster = rasterOfUprightSensorPointMm(film, upright);
         if (!(raster.x >= 0.0 && raster.y >= 0.0 && raster.x < film.width && raster.y < film.height))
           continue;
+        if (!visible(shadow)) continue;
         const auto pixel = std::uint32_t(int(raster.y) * film.width + int(raster.x));
         const double w = share * irradiance * t.ray.transmittance;
         out.push_back({pixel, Vec3d(colour) * w});
@@ -176,14 +324,14 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         for (const Deposit& d : deposits[std::size_t(c % kGroup)]) {
           sums[d.pixel] += d.value;  // the image's bits, with or without the variance
           if (withVariance) {
-            lightSums[d.pixel] += d.value;
+            sourceSums[d.pixel] += d.value;
             variances[d.pixel] += d.value * d.value;
           }
         }
     }
     if (withVariance)
       for (std::size_t i = 0; i < pixelCount; ++i)
-        variances[i] -= lightSums[i] * lightSums[i] / double(paths);
+        variances[i] -= sourceSums[i] * sourceSums[i] / double(source.paths);
   }
   for (std::size_t i = 0; i < pixelCount; ++i) image.pixels[i] = Rgb(sums[i]);
   if (!withVariance) return image;

@@ -95,7 +95,8 @@ std::uint32_t Integrator::sampleDimensions() const {
   return std::uint32_t(std::min<std::int64_t>(last + SampleBlock::kDims, std::int64_t{1} << 30));
 }
 
-PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, SampledWavelengths lambda) const {
+PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, SampledWavelengths lambda,
+                             bool afterLensReflection) const {
   PathSample out;
   Spectrum radiance{0.0f};
   Rgb film{0, 0, 0};  // what the path gathered before it dropped wavelengths
@@ -114,7 +115,8 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
     const std::optional<SurfaceHit> hit = scene_.intersect(ray);
     if (!hit) {
       const Rgb le = environment_.eval(ray.direction);
-      if (maxComponent(le) > 0) {
+      // The sun seen through a lens reflection is the flare light pass's.
+      if (maxComponent(le) > 0 && !(depth == 0 && afterLensReflection && environment_.inSun(ray.direction))) {
         const float w =
             depth == 0 ? 1.0f : powerHeuristic(prevBsdfPdf, lights_.pdfEnvironment(ray.direction));
         radiance += beta * lambda.illuminant(le) * w;
@@ -139,7 +141,9 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
       out.normal = sp.frame.n;
       out.albedo = sp.albedo;
     }
-    if (maxComponent(sp.emission) > 0) {
+    // A still emitter seen through a lens reflection is the flare light pass's.
+    if (maxComponent(sp.emission) > 0 &&
+        !(depth == 0 && afterLensReflection && lights_.stillEmitter(hit->instance, hit->primitive))) {
       float w = 1.0f;
       if (depth > 0)
         w = powerHeuristic(prevBsdfPdf,

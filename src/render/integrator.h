@@ -40,9 +40,13 @@ class Integrator {
              const Environment& environment, const IntegratorSettings& settings);
 
   // `ray` must have a unit direction; `lambda` says how the path carries
-  // colour (RGB, or the sample's wavelengths).
+  // colour (RGB, or the sample's wavelengths). `afterLensReflection`: the
+  // camera ray reflected in the lens (CameraRay::lensReflected), so the
+  // emitters and the environment's sun that the flare light pass takes are
+  // not counted where the ray meets them (they are, as they light the scene).
   PathSample trace(const Ray& ray, const Sampler& sampler,
-                   SampledWavelengths lambda = SampledWavelengths::rgb()) const;
+                   SampledWavelengths lambda = SampledWavelengths::rgb(),
+                   bool afterLensReflection = false) const;
   // The sampler dimensions a camera path can use, camera's included (the
   // blocks it asks for; see PixelSeeds).
   std::uint32_t sampleDimensions() const;

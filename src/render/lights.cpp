@@ -350,6 +350,24 @@ float LightSet::pdfTriangle(int instance, unsigned primitive, const Vec3f& p, co
   return pickProbability(firstTriangle_ + k, p, n) * dist2 / (cosLight * area);
 }
 
+bool LightSet::stillEmitter(int instance, unsigned primitive) const {
+  if (instance < 0 || std::size_t(instance) >= instanceFirstTriangle_.size()) return false;
+  const std::int64_t first = instanceFirstTriangle_[std::size_t(instance)];
+  if (first < 0) return false;
+  const std::size_t k = std::size_t(first) + primitive;
+  return k < triangles_.size() && triangles_[k].firstStep == kNoSteps;
+}
+
+LightSet::EmissiveTriangle LightSet::emissiveTriangle(std::size_t t) const {
+  const Triangle& tri = triangles_[t];
+  const Material& m = materials_->material(tri.material);
+  return {tri.p0,        tri.e1,
+          tri.e2,        tri.normal,
+          tri.area,      luminance(m.emissive),
+          m.doubleSided, tri.firstStep == kNoSteps,
+          tri.instance};
+}
+
 float LightSet::pdfEnvironment(const Vec3f& direction) const {
   if (environment_->isBlack() || environmentIndex_ >= pick_.size()) return 0;
   // Not pickProbability: the environment's pick depends on no point.

@@ -70,6 +70,29 @@ class LightSet {
   float pickProbability(std::size_t i, const Vec3f& p, const Vec3f& n) const;
   std::size_t lightCount() const { return pick_.size(); }
 
+  // Lens flare's light pass (render/flare_light_pass.h) takes the lens
+  // reflections of every emissive triangle that stays still during the
+  // shutter (the pass has no time: a moving one is left to camera paths),
+  // and camera paths skip those after a lens reflection.
+  bool stillEmitter(int instance, unsigned primitive) const;
+  // Emissive triangle t (0 <= t < emissiveTriangleCount()) where it is at
+  // the shutter's opening, for the pass's choice of triangles.
+  struct EmissiveTriangle {
+    Vec3f p0, e1, e2;  // world space
+    Vec3f normal;      // unit, the front
+    float area = 0;
+    float luminance = 0;  // of the emissive factor (textures only dim it)
+    bool twoSided = false;
+    bool still = true;
+    int instance = -1;  // SceneDesc::instances
+  };
+  EmissiveTriangle emissiveTriangle(std::size_t t) const;
+  // A point uniform on emissive triangle t (at the opening) seen from p: as
+  // sample() gives it, without the pick (pdf per solid angle at p).
+  std::optional<LightSample> sampleEmissiveTriangle(std::size_t t, const Vec3f& p, const Vec2f& u) const {
+    return sampleTriangle(triangles_[t], p, u);
+  }
+
  private:
   struct Triangle {
     Vec3f p0, e1, e2;  // world space: p0 + b1 e1 + b2 e2

@@ -127,7 +127,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             acc.addBlocked();
             ++tileBlocked;
           } else {
-            PathSample path = integrator.trace(cr->ray, samplers[k], lambdas[k]);
+            PathSample path = integrator.trace(cr->ray, samplers[k], lambdas[k], cr->lensReflected);
             if (!dispersionWeights.empty()) path.radiance = path.radiance * dispersionWeights[k];
             acc.add(path, cr->weight);
           }

@@ -44,8 +44,10 @@ struct RenderSettings {
   // shutter); none: every ray at time 0, with the bits of a render before
   // motion existed.
   std::optional<ShutterTiming> timing;
-  // --flare on: the light pass's image of the punctual lights, the whole
-  // frame, added to the output's R, G and B (renderOutput); none: nothing.
+  // --flare on: the light pass's image (punctual lights; still emitters'
+  // and the environment sun's lens reflections, which the camera paths of a
+  // flare camera skip), the whole frame, added to the output's R, G and B
+  // (renderOutput); none: nothing.
   std::shared_ptr<const FlareImage> flareLight;
 };
 

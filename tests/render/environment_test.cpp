@@ -276,6 +276,54 @@ TEST(Environment, ImportanceSamplingASunInTheMapCutsVarianceTenfold) {
   }
 }
 
+// The sun that lens flare's light pass takes (Environment::hasSun): the test
+// map's one bright texel (the sky is under 1% of it), and none where the
+// brightest part is wide or the map constant. Its density integrates to 1
+// over the sphere, and its samples estimate the texel's radiance times its
+// solid angle (closed form: 2 pi / 32 x (cos(4 pi / 16) - cos(5 pi / 16))).
+TEST(Environment, TheSunIsTheSmallBrightestPartOfTheMap) {
+  const Environment env = Environment::latLong(testMap());
+  ASSERT_TRUE(env.hasSun());
+  const Vec3f centre = Environment::uvToDirection({20.5f / 32, 4.5f / 16});
+  EXPECT_TRUE(env.inSun(centre));
+  EXPECT_FALSE(env.inSun(Environment::uvToDirection({10.5f / 32, 4.5f / 16})));
+  constexpr int kNu = 32 * 8, kNv = 16 * 8;
+  double integral = 0;
+  for (int j = 0; j < kNv; ++j) {
+    const double theta0 = kPi * j / kNv, theta1 = kPi * (j + 1) / kNv;
+    const double cell = (std::cos(theta0) - std::cos(theta1)) * 2 * kPi / kNu;
+    for (int i = 0; i < kNu; ++i)
+      integral += env.pdfSun(Environment::uvToDirection({(i + 0.5f) / kNu, (j + 0.5f) / kNv})) * cell;
+  }
+  EXPECT_NEAR(integral, 1.0, 5e-3);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  double sum = 0;
+  constexpr int kN = 20000;
+  for (int k = 0; k < kN; ++k) {
+    const std::optional<EnvironmentSample> s = env.sampleSun({u(rng), u(rng)});
+    ASSERT_TRUE(s);
+    ASSERT_TRUE(env.inSun(s->direction));
+    sum += s->radiance.x / s->pdf;
+  }
+  const double solidAngle = 2 * kPi / 32 * (std::cos(4 * kPi / 16) - std::cos(5 * kPi / 16));
+  EXPECT_NEAR(sum / kN / (200.0 * solidAngle), 1.0, 0.01);
+  // Turned with the map, gone with its light.
+  EXPECT_TRUE(env.rotatedAboutY(90).inSun(Vec3f{centre.z, centre.y, -centre.x}));  // -Z turns to -X
+  EXPECT_FALSE(env.rotatedAboutY(90).inSun(centre));
+  EXPECT_FALSE(env.scaled(0).hasSun());
+  EXPECT_FALSE(Environment::constant({1, 1, 1}).hasSun());
+  // A bright band 4 rows deep (over 0.05 sr) is no sun, nor a uniform map.
+  Image wide(32, 16, {"R", "G", "B"});
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c) wide.at(x, y, c) = 100;
+  EXPECT_FALSE(Environment::latLong(wide).hasSun());
+  Image uniform(32, 16, {"R", "G", "B"});
+  for (float& v : uniform.pixels) v = 1;
+  EXPECT_FALSE(Environment::latLong(uniform).hasSun());
+}
+
 TEST(Distribution1D, PicksInProportionAndNeverPicksZeroWeights) {
   const Distribution1D d({1, 0, 3, 0});
   EXPECT_FLOAT_EQ(d.probability(0), 0.25f);
