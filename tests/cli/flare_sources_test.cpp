@@ -94,7 +94,7 @@ Job setUp(const std::filesystem::path& scene, const EnvironmentSpec& environment
   c.lens = "dgauss-50mm";
   c.lensDir = std::filesystem::path(LENSRT_SOURCE_DIR) / "lenses";
   c.fNumber = 2.8;
-  c.focus = "2";
+  c.focus = std::string("2");  // (a const char* here trips GCC 12's -Wstringop-overflow)
   c.coatings = "none";
   c.flare = "on";
   c.spectral = "off";
