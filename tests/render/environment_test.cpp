@@ -12,6 +12,22 @@
 namespace lensrt {
 namespace {
 
+// The integral of a density over the sphere by the midpoint rule on a grid
+// that refines the test map's 32 x 16 texels: exact for a piecewise-constant
+// density.
+template <class Density>
+double sphereIntegral(const Density& density) {
+  constexpr int kNu = 32 * 8, kNv = 16 * 8;
+  double integral = 0;
+  for (int j = 0; j < kNv; ++j) {
+    const double theta0 = kPi * j / kNv, theta1 = kPi * (j + 1) / kNv;
+    const double cell = (std::cos(theta0) - std::cos(theta1)) * 2 * kPi / kNu;
+    for (int i = 0; i < kNu; ++i)
+      integral += density(Environment::uvToDirection({(i + 0.5f) / kNu, (j + 0.5f) / kNv})) * cell;
+  }
+  return integral;
+}
+
 // A lat-long map with a bright small "sun", a sky gradient and a dark band.
 Image testMap() {
   Image img(32, 16, {"R", "G", "B"});
@@ -41,16 +57,7 @@ TEST(Environment, LatLongAxes) {
 
 TEST(Environment, ImportancePdfIntegratesToOneOverTheSphere) {
   const Environment env = Environment::latLong(testMap());
-  // Midpoint rule on a grid that refines the texels: exact for a piecewise-constant density.
-  constexpr int kNu = 32 * 8, kNv = 16 * 8;
-  double integral = 0;
-  for (int j = 0; j < kNv; ++j) {
-    const double theta0 = kPi * j / kNv, theta1 = kPi * (j + 1) / kNv;
-    const double solidAnglePerCell = (std::cos(theta0) - std::cos(theta1)) * 2 * kPi / kNu;
-    for (int i = 0; i < kNu; ++i)
-      integral +=
-          env.pdf(Environment::uvToDirection({(i + 0.5f) / kNu, (j + 0.5f) / kNv})) * solidAnglePerCell;
-  }
+  const double integral = sphereIntegral([&](const Vec3f& d) { return env.pdf(d); });
   // The density uses each row's centre sin(theta) while the cell uses the exact
   // band: the mismatch is second order in the texel height.
   EXPECT_NEAR(integral, 1.0, 5e-3);
@@ -287,14 +294,7 @@ TEST(Environment, TheSunIsTheSmallBrightestPartOfTheMap) {
   const Vec3f centre = Environment::uvToDirection({20.5f / 32, 4.5f / 16});
   EXPECT_TRUE(env.inSun(centre));
   EXPECT_FALSE(env.inSun(Environment::uvToDirection({10.5f / 32, 4.5f / 16})));
-  constexpr int kNu = 32 * 8, kNv = 16 * 8;
-  double integral = 0;
-  for (int j = 0; j < kNv; ++j) {
-    const double theta0 = kPi * j / kNv, theta1 = kPi * (j + 1) / kNv;
-    const double cell = (std::cos(theta0) - std::cos(theta1)) * 2 * kPi / kNu;
-    for (int i = 0; i < kNu; ++i)
-      integral += env.pdfSun(Environment::uvToDirection({(i + 0.5f) / kNu, (j + 0.5f) / kNv})) * cell;
-  }
+  const double integral = sphereIntegral([&](const Vec3f& d) { return env.pdfSun(d); });
   EXPECT_NEAR(integral, 1.0, 5e-3);
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
