@@ -509,7 +509,10 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   }
   // A rigidly moving instance: its placement at the ray's time, as Embree
   // interpolated it (slerp of the rotation) to find the hit.
-  const Transform xf = rec.rigidMotion ? transformAt(rec.rigidMotion, time) : inst.worldFromObject;
+  // (A reference otherwise: a copy would cost every hit of every scene.)
+  std::optional<Transform> timed;
+  if (rec.rigidMotion) timed = transformAt(rec.rigidMotion, time);
+  const Transform& xf = timed ? *timed : inst.worldFromObject;
   // A vertex attribute's world vector at the hit, interpolated in time too.
   const auto stepped = [&](const auto& attribute, const auto& toWorld) {
     const Vec3f a = toWorld(xf, attribute(m));
