@@ -242,11 +242,14 @@ std::shared_ptr<const FlareImage> RenderJob::flareLight(const Camera& camera,
   if (!lens || !lens->flare()) return nullptr;
   // Every punctual light, the still emitters and the environment's sun; each
   // path's shadow ray says whether the scene hides its source from the lens.
-  const FlareScene sources{&scene_->geometry(), lights_.get(), environment_.get()};
+  // The lamps' light on the scene where camera paths would take it, by
+  // next-event estimation at their first vertex.
+  const FlareScene sources{&scene_->geometry(), lights_.get(), environment_.get(),
+                           frame_.maxDepth >= 1 ? &scene_->materials() : nullptr};
   const FilmGeometry& film = camera.film();
   const std::uint64_t paths =
       std::max<std::uint64_t>(65536, std::uint64_t(std::max(1, settings.samplesPerPixel)) *
-                                         std::uint64_t(film.width) * std::uint64_t(film.height) / 4);
+                                         std::uint64_t(film.width) * std::uint64_t(film.height) / 8);
   return std::make_shared<const FlareImage>(
       flareLightPass(*lens, scene_->geometry().desc().lights, paths, settings.seed,
                      settings.filmResponse.get(), settings.threads, settings.aovs.variance, sources));

@@ -363,16 +363,23 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, bool fromFilm,
       const double r = passes ? 1.0 - surfaceTransmittance(coating, n1, n2, cosI,
                                                            std::min(1.0, -dot(n, refracted)), wavelengthNm)
                               : 1.0;
-      if (result.reflections < options.maxReflections && random() < r) {
+      const bool mayReflect = result.reflections < options.maxReflections;
+      const double q = mayReflect && options.reflectionBoost > 1.0
+                           ? std::max(r, std::min(0.5, options.reflectionBoost * r))
+                           : r;
+      if (mayReflect && random() < q) {
+        if (q != r) weight *= r / q;
         d = d + n * (2.0 * cosI);
         towardScene = !towardScene;
         bounce(i, false);
       } else {
-        if (result.reflections >= options.maxReflections) {
+        if (!mayReflect) {
           // Made to refract: the reflected part R is dropped (all of it
           // under total internal reflection).
           result.truncated += weight * r;
           weight *= 1.0 - r;
+        } else if (q != r) {
+          weight *= (1.0 - r) / (1.0 - q);
         }
         if (!passes) {
           result.end = FlareTrace::End::Blocked;

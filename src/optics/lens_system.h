@@ -98,6 +98,13 @@ class LensSystem {
     // The stop's transmittance at a point (x, y) of its plane (lens space,
     // mm), in [0, 1], at every crossing; empty: the round stop alone.
     std::function<double(double, double)> stop;
+    // More than 1: a glass surface reflects with probability q = min(0.5,
+    // reflectionBoost x R) (R itself where that is less), the weight times
+    // R / q when it does and (1 - R) / (1 - q) when it refracts, so that
+    // more paths make ghosts for the same expected weights (the light pass's
+    // paths, most of which would otherwise refract straight through: their
+    // weights no longer add up path by path, only on average).
+    double reflectionBoost = 1.0;
   };
   struct FlareTrace {
     // Where the ray ends: leaving the front surface toward the scene, leaving

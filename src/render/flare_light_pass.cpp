@@ -12,9 +12,11 @@
 
 #include "camera/film_mapping.h"
 #include "core/constants.h"
+#include "core/frame.h"
 #include "core/ray.h"
 #include "render/environment.h"
 #include "render/lights.h"
+#include "render/material_eval.h"
 #include "render/spectral_response.h"
 #include "render/wavelengths.h"
 #include "scene/render_scene.h"
@@ -124,14 +126,53 @@ std::vector<float> emitterWeights(const LensFrame& frame, const LightSet& lights
   return weights;
 }
 
-// A source of the pass: a punctual light, the still emitters together, or the sun.
+// A source of the pass: a punctual light, the still emitters together, the
+// sun, or a lamp's light on the scene.
 struct Source {
-  enum class Kind { Punctual, Emitters, Sun };
+  enum class Kind { Punctual, Emitters, Sun, LitSurface };
   Kind kind = Kind::Punctual;
   LensLight light;  // Punctual
   std::uint64_t paths = 0;
-  bool reflectedOnly = false;  // deposit only paths with a lens reflection
+  bool reflectedOnly = false;           // deposit only paths with a lens reflection
+  const PunctualLight* lamp = nullptr;  // LitSurface
 };
+
+// A direction from a lamp (unit, world) uniform over its sphere, or a spot's
+// over its outer cone, and its density (per steradian).
+struct LampDirection {
+  Vec3f direction;
+  double pdf = 0;
+};
+LampDirection sampleLampDirection(const PunctualLight& lamp, double u1, double u2) {
+  const bool spot = lamp.type == PunctualLight::Type::Spot;
+  const double cosOuter = spot ? std::cos(double(std::clamp(lamp.outerConeAngle, 0.0f, kPiF))) : -1.0;
+  const double cosTheta = 1.0 - u1 * (1.0 - cosOuter);
+  const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta)), phi = 2.0 * kPi * u2;
+  const Vec3f local{float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(cosTheta)};
+  const Vec3f axis = spot ? lamp.direction : Vec3f{0, 0, 1};
+  return {normalize(Frame::fromNormal(axis).toWorld(local)), 1.0 / (2.0 * kPi * (1.0 - cosOuter))};
+}
+
+// What the surface at `hit` sends toward wo of a lamp's light arriving
+// along -wi, in the units of the pass's lit-surface paths: the BSDF times
+// the shading cosine, as a camera path's next-event estimate there takes it
+// (with its conditions on the sides of the normals), times the geometric
+// cosine toward wo (the area the disc sees) over the geometric cosine
+// toward wi (the area the lamp's direction lights). `lambdas` drop their
+// secondary wavelengths at a dispersive volume, as the camera path's do.
+Spectrum litSurfaceReflection(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo,
+                              const Vec3f& wi, SampledWavelengths& lambdas) {
+  if (lambdas.spectral() && isDispersiveVolume(materials.material(hit.material)))
+    lambdas.terminateSecondary();
+  const ShadingPoint sp = evaluateMaterial(materials, hit, wo, lambdas);
+  const GltfBsdf bsdf(sp.bsdf, sp.frame, sp.coatFrame, wo);
+  const Vec3f& ng = sp.geometricNormal;
+  const bool above = dot(wi, ng) > 0;
+  if (!(above || bsdf.transmits()) || above != (dot(wi, sp.frame.n) > 0)) return Spectrum(0.0f);
+  const float cosIn = std::abs(dot(wi, ng));
+  if (!(cosIn > 1e-6f)) return Spectrum(0.0f);
+  return bsdf.evalPdf(wo, wi).f * (std::abs(dot(wi, sp.frame.n)) * std::abs(dot(wo, ng)) / cosIn);
+}
 
 // A path's shadow ray: from its disc point (world) toward its source point,
 // or toward a direction (distance infinite).
@@ -139,6 +180,18 @@ struct Shadow {
   Vec3f from, direction;
   float distance = kInfinityF;
 };
+
+// The pass's paths reflect in the lens kReflectionBoost times as often as
+// the Fresnel reflectance says (LensSystem::FlareOptions::reflectionBoost):
+// uncoated, about 60% of them would otherwise refract straight through
+// (where only the direct image of a lamp needs them, a pixel or two),
+// multi-coated 98%.
+constexpr double kReflectionBoost = 4.0;
+
+// A lamp's lit surfaces take 1/kLitSurfaceShare of a light's paths: most of
+// them meet a surface the lens does not see or refract straight through the
+// lens (only reflected paths count), and their ghosts are wide and soft.
+constexpr std::uint64_t kLitSurfaceShare = 8;
 
 struct Deposit {
   std::uint32_t pixel;
@@ -156,7 +209,8 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
                    std::vector<Rgb>(withVariance ? pixelCount : 0, Rgb{})};
   if (paths == 0) return image;
   const LensSystem& lens = camera.lens();
-  const LensSystem::FlareOptions& options = camera.flareOptions();
+  LensSystem::FlareOptions options = camera.flareOptions();
+  options.reflectionBoost = kReflectionBoost;
   const LensFrame frame{camera, camera.worldFromCamera().inverse()};
   const double discRadius = 1.2 * lens.frontApertureRadius();
   const double discArea = kPi * discRadius * discRadius;  // mm^2
@@ -180,6 +234,11 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   }
   if (scene.environment && scene.environment->hasSun())
     sources.push_back({Source::Kind::Sun, {}, paths, true});
+  if (scene.geometry && scene.litSurfaces)
+    for (const PunctualLight& l : lights)
+      if (isFlareLamp(l) && maxComponent(l.intensity) > 0)
+        sources.push_back(
+            {Source::Kind::LitSurface, {}, std::max<std::uint64_t>(1, paths / kLitSurfaceShare), true, &l});
 
   std::vector<Vec3d> sums(pixelCount, Vec3d{});
   // The deposits' squares, and one source's own sum (its variance needs it):
@@ -221,6 +280,8 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         // From the disc point (world) toward the source: tested only for a
         // path that deposits (most do not), as it takes no random number.
         Shadow shadow;
+        std::optional<SurfaceHit> lit;  // a lit-surface path's point on the scene
+        Vec3f litWo, litWi;             // from there toward the disc point and toward the lamp
         switch (source.kind) {
           case Source::Kind::Punctual: {
             const LensLight& light = source.light;
@@ -276,6 +337,35 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
             shadow = {from, es->direction, kInfinityF};
             break;
           }
+          case Source::Kind::LitSurface: {
+            // From the lamp to the first surface x, then toward the disc point
+            // as x's BSDF sends it: the flux through the disc's share is the
+            // lamp's intensity over the direction's density times
+            // litSurfaceReflection (with the disc point's cosine / r^2); the
+            // distance to x cancels (x's irradiance against the area a
+            // direction covers there).
+            const PunctualLight& lamp = *source.lamp;
+            const LampDirection dir = sampleLampDirection(lamp, random(), random());
+            lit = scene.geometry->intersect(Ray{lamp.position, dir.direction, 0.0f, kInfinityF, 0.0f});
+            if (!lit) continue;
+            float scale = rangeWindow(lamp, lit->t);
+            if (lamp.type == PunctualLight::Type::Spot) scale *= spotAttenuation(lamp, dir.direction);
+            if (!(scale > 0.0f)) continue;
+            const Vec3d point = frame.lensOf(lit->position);
+            if (!(point.z < 0.0)) continue;  // behind the front vertex
+            const Vec3d d = target - point;
+            const double r2 = lengthSquared(d);
+            ray = {point, d};
+            irradiance = (d.z / std::sqrt(r2)) / (r2 * 1e-6) / dir.pdf;
+            emitted = lamp.intensity * scale;
+            const Vec3f from = frame.worldOf(target), toSurface = lit->position - from;
+            const float distance = length(toSurface);
+            if (!(distance > 0.0f)) continue;
+            litWo = -toSurface / distance;
+            litWi = -dir.direction;
+            shadow = {from, toSurface / distance, distance};
+            break;
+          }
         }
         double wavelength = kWavelengthDNm;
         // The source's colour on the film as the renderer takes a camera
@@ -290,12 +380,22 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
             wavelength = lambdas.hero();
             lambdas.terminateSecondary();
           }
-          colour = lambdas.toFilm(lambdas.illuminant(emitted));
-        } else if (dispersive) {
-          const WavelengthSample ws = sampleWavelength(uWavelength);
-          wavelength = ws.wavelengthNm;
-          colour = colour * ws.weight;
+          Spectrum light = lambdas.illuminant(emitted);
+          if (lit) light *= litSurfaceReflection(*scene.litSurfaces, *lit, litWo, litWi, lambdas);
+          colour = lambdas.toFilm(light);
+        } else {
+          if (dispersive) {
+            const WavelengthSample ws = sampleWavelength(uWavelength);
+            wavelength = ws.wavelengthNm;
+            colour = colour * ws.weight;
+          }
+          if (lit) {
+            SampledWavelengths rgb = SampledWavelengths::rgb();
+            colour = rgb.toFilm(rgb.illuminant(colour) *
+                                litSurfaceReflection(*scene.litSurfaces, *lit, litWo, litWi, rgb));
+          }
         }
+        if (lit && !(maxComponent(colour) > 0.0f)) continue;  // x sends nothing toward the disc point
         const LensSystem::FlareTrace t = lens.traceFromSceneWithFlare(ray, options, random, wavelength);
         if (t.end != LensSystem::FlareTrace::End::Film) continue;
         // The direct image of an emitter or the sun is the camera paths'.

@@ -12,7 +12,18 @@
 //   sun (Environment::hasSun): only their paths with at least one lens
 //   reflection (ghosts and glare). Camera paths keep the direct image and
 //   skip these sources where a camera ray that reflected in the lens meets
-//   them (Integrator::trace's afterLensReflection), so no path counts twice.
+//   them (Integrator::trace's afterLensReflection), so no path counts twice;
+// - the still point and spot lights' (isFlareLamp) light on the surfaces
+//   the lens sees (FlareScene::litSurfaces): the ghosts of the bright patch
+//   a lamp makes on a wall next to it, which camera paths find only as rare
+//   heavy samples. Each path leaves the lamp in a direction uniform over its
+//   sphere (a spot's: over its outer cone), meets the first surface, and is
+//   reflected there toward its disc point by the surface's BSDF (if nothing
+//   is in between); only its paths with a lens reflection count, and a
+//   camera path whose ray reflected in the lens does not take these lamps'
+//   light by next-event estimation at the first surface it meets, when
+//   nothing is in the lamp's way (through a glass sheet it does: the pass's
+//   rays stop at the sheet).
 //
 // Each path leaves its source toward a point spread uniformly over a disc
 // 20% wider than the front element's clear aperture, on the front vertex
@@ -61,6 +72,7 @@ namespace lensrt {
 class Environment;
 class FilmResponse;
 class LightSet;
+class MaterialTable;
 class RenderScene;
 
 inline constexpr std::uint64_t kFlareChunk = 4096;
@@ -77,12 +89,17 @@ struct FlareScene {
   const RenderScene* geometry = nullptr;     // the shadow rays; none: nothing hides a source
   const LightSet* emitters = nullptr;        // its still emissive triangles; none: no emitter
   const Environment* environment = nullptr;  // its sun; none: no sun
+  // With geometry: the lamps' (isFlareLamp) light on the surfaces the lens
+  // sees, as camera paths with at least one scattering event take it
+  // (IntegratorSettings::maxDepth >= 1); none: no lit surface.
+  const MaterialTable* litSurfaces = nullptr;
 };
 
 // `lights` in world space; a light behind the front vertex or pointing away
 // (a spot's cone) adds nothing. `paths` for each punctual light, for the
 // still emitters together (as many as for one light: each of their paths
-// costs a whole lens trace, and few reflect) and for the sun. The
+// costs a whole lens trace, and few reflect), for the sun and for each
+// lamp's lit surfaces. The
 // camera must have flare on (LensCameraParams::flareReflections).
 // `response`: spectral transport's film (RenderSettings::filmResponse), each
 // path at its own wavelengths as a camera sample's; none: RGB. `threads` 0:

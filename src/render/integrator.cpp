@@ -40,11 +40,6 @@ Spectrum attenuationCoefficient(const Material& m, const SampledWavelengths& lam
   return sigma;
 }
 
-// A volume whose index depends on the wavelength (KHR_materials_dispersion).
-bool dispersive(const Material& m) {
-  return m.dispersion > 0 && m.transmission > 0 && !m.thinWalled();
-}
-
 }  // namespace
 
 float powerHeuristic(float pdfA, float pdfB) {
@@ -126,7 +121,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
     if (maxComponent(sigma) > 0) beta *= absorbed(hit->t);
     const Vec3f wo = -ray.direction;
     if (lambda.spectral() && !lambda.secondaryTerminated() &&
-        dispersive(materials_.material(hit->material))) {
+        isDispersiveVolume(materials_.material(hit->material))) {
       // Refraction at this surface depends on the wavelength: the path goes on
       // at the hero alone. What it has gathered so far keeps its four.
       film += lambda.toFilm(radiance);
@@ -180,9 +175,16 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
           if (finite) aimAt(shadow, target);
 
           if (settings_.observer) settings_.observer->traced(RayKind::Shadow, shadow);
+          // A lamp's light on what a lens-reflected camera ray meets first,
+          // with nothing in between, is the flare light pass's (its lit
+          // surfaces' ghosts). Through a glass sheet it stays here: the
+          // pass's rays stop at the sheet.
+          const bool passTakes =
+              depth == 0 && afterLensReflection && ls->flareLamp && !scene_.occluded(shadow);
           // Punctual lights shine through thin-walled glass (see
           // thinGlassTransmittance); every other shadow ray stops at anything.
-          const Spectrum visible = ls->delta && thinGlass_
+          const Spectrum visible = passTakes ? Spectrum(0.0f)
+                                   : ls->delta && thinGlass_
                                        ? thinGlassTransmittance(shadow, target, finite, lambda)
                                        : Spectrum(scene_.occluded(shadow) ? 0.0f : 1.0f);
           if (maxComponent(visible) > 0) {

@@ -43,7 +43,8 @@ class Integrator {
   // colour (RGB, or the sample's wavelengths). `afterLensReflection`: the
   // camera ray reflected in the lens (CameraRay::lensReflected), so the
   // emitters and the environment's sun that the flare light pass takes are
-  // not counted where the ray meets them (they are, as they light the scene).
+  // not counted where the ray meets them (they are, as they light the scene),
+  // nor the still lamps' light on the surface the ray meets first.
   PathSample trace(const Ray& ray, const Sampler& sampler,
                    SampledWavelengths lambda = SampledWavelengths::rgb(),
                    bool afterLensReflection = false) const;

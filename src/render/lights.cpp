@@ -260,6 +260,10 @@ PunctualLight LightSet::posed(const PunctualLight& l, float time) const {
   return at;
 }
 
+bool isFlareLamp(const PunctualLight& light) {
+  return light.type != PunctualLight::Type::Directional && light.motion.size() < 2;
+}
+
 std::optional<LightSample> LightSet::samplePunctual(const PunctualLight& l, const Vec3f& p) const {
   if (l.type == PunctualLight::Type::Directional) {
     return LightSample{-l.direction, kInfinityF, l.intensity, 1.0f, true};
@@ -272,7 +276,7 @@ std::optional<LightSample> LightSet::samplePunctual(const PunctualLight& l, cons
   float scale = rangeWindow(l, dist) / dist2;
   if (l.type == PunctualLight::Type::Spot) scale *= spotAttenuation(l, -wi);
   if (!(scale > 0)) return std::nullopt;
-  return LightSample{wi, dist, l.intensity * scale, 1.0f, true};
+  return LightSample{wi, dist, l.intensity * scale, 1.0f, true, isFlareLamp(l)};
 }
 
 std::optional<LightSample> LightSet::sampleTriangle(const Triangle& t, const Vec3f& p, const Vec2f& u) const {

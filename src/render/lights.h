@@ -25,7 +25,15 @@ struct LightSample {
   Rgb radiance;    // arriving at the shading point along -wi, before the BRDF
   float pdf;       // solid angle (including the light pick); for delta lights the pick probability
   bool delta;      // point, spot, directional: no MIS with BSDF sampling
+  // A lamp (isFlareLamp): lens flare's light pass takes its light on the
+  // surfaces a lens-reflected camera ray meets first.
+  bool flareLamp = false;
 };
+
+// A point or spot light that stays still during the shutter: the lights
+// whose light on the scene the flare light pass sends through the lens
+// (render/flare_light_pass.h), as it has no time.
+bool isFlareLamp(const PunctualLight& light);
 
 // How a light is picked (--light-sampler).
 //  Tree:  the lights with a place (point and spot lights, emissive triangles)

@@ -127,6 +127,10 @@ Rgb rgb(const Vec4f& v) {
 
 }  // namespace
 
+bool isDispersiveVolume(const Material& m) {
+  return m.dispersion > 0 && m.transmission > 0 && !m.thinWalled();
+}
+
 ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo,
                               const SampledWavelengths& lambda) {
   const SceneDesc& scene = materials.scene();

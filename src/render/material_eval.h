@@ -45,6 +45,10 @@ struct ShadingPoint {
   Spectrum emission{0.0f};  // radiance leaving toward the viewer
 };
 
+// A volume whose index depends on the wavelength (KHR_materials_dispersion):
+// a spectral path goes on at its hero wavelength alone from there.
+bool isDispersiveVolume(const Material& m);
+
 // wo: unit world direction toward the viewer. The colours are turned into
 // `lambda`'s spectra (RGB transport keeps them).
 ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo,

@@ -153,7 +153,7 @@ std::string quadsGltf(const QuadScene& scene) {
   sceneNodes += std::to_string(quads.size());
   std::string extensions;
   if (!scene.light.empty()) {
-    nodes += R"(,{"translation":[0,1,0],"extensions":{"KHR_lights_punctual":{"light":0}}})";
+    nodes += ",{" + scene.lightPlacement + R"(,"extensions":{"KHR_lights_punctual":{"light":0}}})";
     sceneNodes += ",";
     sceneNodes += std::to_string(quads.size() + 1);
     extensions =

@@ -40,7 +40,7 @@ std::string base64(const std::string& bytes);
 
 // A glTF of quads (two triangles each, one mesh per quad) with a data: URI
 // buffer, one perspective camera and, optionally, one KHR_lights_punctual
-// light 1 m above the origin.
+// light (1 m above the origin unless placed elsewhere).
 struct Quad {
   float corners[4][3];  // counterclockwise seen from the front
   int material;         // index into the materials
@@ -49,6 +49,8 @@ struct QuadScene {
   std::vector<Quad> quads;
   std::string materials;  // glTF material objects, comma-separated
   std::string light;      // a KHR_lights_punctual light object, or none
+  // The light node's placement (a spot shines down its local -Z).
+  std::string lightPlacement = R"("translation":[0,1,0])";
   // The camera node's placement: 2 m above the origin looking straight down.
   std::string cameraPlacement = R"("translation":[0,2,0],"rotation":[-0.707106781,0,0,0.707106781])";
   double yfov = 0.5;  // radians
