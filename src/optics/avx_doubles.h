@@ -60,9 +60,11 @@ LENSRT_AVX inline V sqrt(V v) {
 // The same helpers on eight doubles in an AVX-512 register (F for the
 // arithmetic, DQ for comparisons as lane masks); callers run them only where
 // avx512Enabled() says so. The same operations per lane as the four-wide
-// ones, so the same bits: AVX-512 brings FMA, which GCC would contract
-// a * b + c into (one rounding instead of two), so contraction is off.
-#define LENSRT_AVX512 __attribute__((target("avx512f,avx512dq"), optimize("fp-contract=off")))
+// ones, so the same bits: AVX-512 brings FMA, which a compiler would
+// contract a * b + c into (one rounding instead of two), so a file that calls
+// them is compiled with -ffp-contract=off (src/optics/CMakeLists.txt: GCC's
+// optimize attribute would do it here, but clang ignores it, with a warning).
+#define LENSRT_AVX512 __attribute__((target("avx512f,avx512dq")))
 
 namespace lensrt::avx512 {
 

@@ -170,17 +170,20 @@ class PyScene {
     {
       const py::gil_scoped_release release;
       const std::lock_guard lock(from->mutex);
-      try {
-        posed = from->sequence.at(seconds);
-      } catch (...) {
+      // This pose's warnings, issued once the GIL is held again (with an
+      // error, the error alone).
+      const auto takeFresh = [&] {
         const std::vector<std::string>& all = from->warnings.messages();
         fresh.assign(all.begin() + std::ptrdiff_t(from->emitted), all.end());
         from->emitted = all.size();
+      };
+      try {
+        posed = from->sequence.at(seconds);
+      } catch (...) {
+        takeFresh();
         throw;
       }
-      const std::vector<std::string>& all = from->warnings.messages();
-      fresh.assign(all.begin() + std::ptrdiff_t(from->emitted), all.end());
-      from->emitted = all.size();
+      takeFresh();
     }
     WarningList::emit(file(), fresh);
     return PyScene(std::move(posed), from);
