@@ -249,7 +249,7 @@ std::shared_ptr<const FlareImage> RenderJob::flareLight(const Camera& camera,
   const FilmGeometry& film = camera.film();
   const std::uint64_t paths =
       std::max<std::uint64_t>(65536, std::uint64_t(std::max(1, settings.samplesPerPixel)) *
-                                         std::uint64_t(film.width) * std::uint64_t(film.height) / 8);
+                                         std::uint64_t(film.width) * std::uint64_t(film.height) / 10);
   return std::make_shared<const FlareImage>(
       flareLightPass(*lens, scene_->geometry().desc().lights, paths, settings.seed,
                      settings.filmResponse.get(), settings.threads, settings.aovs.variance, sources));

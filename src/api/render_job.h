@@ -76,10 +76,11 @@ class RenderJob {
   RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
 
   // --flare on with the full lens: the light pass (render/flare_light_pass.h)
-  // of the scene's punctual lights, still emitters and environment sun for
-  // these settings; none otherwise. spp x pixels / 4 paths (at least
-  // 65 536) for each light, the emitters together and the sun, from the
-  // render's seed. Camera paths of
+  // of the scene's punctual lights, still emitters and environment sun (and,
+  // with a maximum depth of 1 or more, the lamps' lit surfaces) for these
+  // settings; none otherwise. spp x pixels / 8 paths (at least 65 536) for
+  // each light, the emitters together and the sun (an eighth of that for a
+  // lamp's lit surfaces), from the render's seed. Camera paths of
   // a flare camera skip these sources after a lens reflection, so every
   // render of one adds this image.
   std::shared_ptr<const FlareImage> flareLight(const Camera& camera, const RenderSettings& settings) const;

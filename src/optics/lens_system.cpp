@@ -289,6 +289,8 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, bool fromFilm,
                                               const std::function<double()>& random, double wavelengthNm,
                                               std::vector<Vec3d>* path) const {
   FlareTrace result;
+  if (options.ghost && (fromFilm || options.barrelReflectance > 0.0))
+    throw std::invalid_argument("flareTrace: a ghost is made from the scene, without the barrel");
   if (!(fromFilm ? validInput<true>(ray) : validInput<false>(ray))) return result;
   const int count = surfaceCount();
   const bool dLine = wavelengthNm == kWavelengthDNm;
@@ -363,6 +365,22 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, bool fromFilm,
       const double r = passes ? 1.0 - surfaceTransmittance(coating, n1, n2, cosI,
                                                            std::min(1.0, -dot(n, refracted)), wavelengthNm)
                               : 1.0;
+      if (options.ghost) {
+        const bool reflect = (!towardScene && result.reflections == 0 && i == options.ghost->first) ||
+                             (towardScene && result.reflections == 1 && i == options.ghost->second);
+        if (reflect) {
+          weight *= r;
+          d = d + n * (2.0 * cosI);
+          towardScene = !towardScene;
+          bounce(i, false);
+        } else {
+          weight *= 1.0 - r;
+          if (!passes) return absorb();
+          d = refracted;
+        }
+        i += towardScene ? -1 : 1;
+        continue;
+      }
       const bool mayReflect = result.reflections < options.maxReflections;
       const double q = mayReflect && options.reflectionBoost > 1.0
                            ? std::max(r, std::min(0.5, options.reflectionBoost * r))

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/vec.h"
@@ -105,6 +106,15 @@ class LensSystem {
     // paths, most of which would otherwise refract straight through: their
     // weights no longer add up path by path, only on average).
     double reflectionBoost = 1.0;
+    // A ghost to make rather than a choice at every surface: the path
+    // reflects at surface ghost->first (0-based) on its way toward the film
+    // and at ghost->second (< first) on its way back, and refracts at every
+    // other glass surface, its weight times R at those two and 1 - R
+    // elsewhere: the expected weight of the paths that take that ghost.
+    // Monte Carlo over the ghosts (the light pass picks one per path), for
+    // traces from the scene without the barrel; maxReflections and
+    // reflectionBoost do not apply.
+    std::optional<std::pair<int, int>> ghost = std::nullopt;
   };
   struct FlareTrace {
     // Where the ray ends: leaving the front surface toward the scene, leaving

@@ -14,6 +14,7 @@
 #include "core/constants.h"
 #include "core/frame.h"
 #include "core/ray.h"
+#include "optics/ghosts.h"
 #include "render/environment.h"
 #include "render/lights.h"
 #include "render/material_eval.h"
@@ -181,12 +182,52 @@ struct Shadow {
   float distance = kInfinityF;
 };
 
-// The pass's paths reflect in the lens kReflectionBoost times as often as
-// the Fresnel reflectance says (LensSystem::FlareOptions::reflectionBoost):
+// Where ghosts are not picked (ghostChoice: more than two reflections, or
+// the barrel), the pass's paths reflect in the lens kReflectionBoost times
+// as often as the Fresnel reflectance says
+// (LensSystem::FlareOptions::reflectionBoost):
 // uncoated, about 60% of them would otherwise refract straight through
 // (where only the direct image of a lamp needs them, a pixel or two),
 // multi-coated 98%.
 constexpr double kReflectionBoost = 4.0;
+
+// With ghosts picked (ghostChoice), a source that keeps its direct image
+// gives it this share of its paths (a lamp's direct image is a spot of a
+// few pixels, or its bokeh disc); the rest each make one ghost.
+constexpr double kDirectShare = 1.0 / 8.0;
+
+// The pass's choice of ghost, one per path, where the camera's flare allows
+// two reflections and no barrel (the paths with two reflections are then all
+// that reach the film but the direct image): each two-reflection ghost
+// (ghostPaths) with probability in proportion to its paraxial strength R_i
+// R_j times the part of its bundle the apertures pass (plus a tenth, as a
+// ghost that misses them on the axis may pass off it), its paths made with
+// FlareOptions::ghost. About half of them reach the film, against about one
+// in ten of the boosted reflect-or-refract paths, and each ghost gets paths in
+// proportion to its strength. Surfaces whose d-line indices are equal (a
+// cemented pair of equal nd) reflect only through dispersion and are not
+// picked: their R is of order 1e-6.
+struct GhostChoice {
+  std::vector<LensSystem::FlareOptions> options;  // one per ghost, FlareOptions::ghost set
+  Distribution1D pick;
+  LensSystem::FlareOptions direct;  // no reflection: the direct image
+};
+std::optional<GhostChoice> ghostChoice(const LensSystem& lens, const LensSystem::FlareOptions& options) {
+  if (options.maxReflections != 2 || options.barrelReflectance > 0.0) return std::nullopt;
+  GhostChoice c;
+  std::vector<float> weights;
+  for (const GhostPath& g : ghostPaths(lens.prescription(), lens.coating().value_or(Coating::None))) {
+    LensSystem::FlareOptions o = options;
+    o.ghost = std::pair{g.first, g.second};
+    c.options.push_back(std::move(o));
+    weights.push_back(float(g.strength * (0.1 + g.passing)));
+  }
+  c.pick = Distribution1D(weights);
+  if (c.pick.empty()) return std::nullopt;
+  c.direct = options;
+  c.direct.maxReflections = 0;
+  return c;
+}
 
 // A lamp's lit surfaces take 1/kLitSurfaceShare of a light's paths: most of
 // them meet a surface the lens does not see or refract straight through the
@@ -211,6 +252,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
   const LensSystem& lens = camera.lens();
   LensSystem::FlareOptions options = camera.flareOptions();
   options.reflectionBoost = kReflectionBoost;
+  const std::optional<GhostChoice> ghosts = ghostChoice(lens, options);
   const LensFrame frame{camera, camera.worldFromCamera().inverse()};
   const double discRadius = 1.2 * lens.frontApertureRadius();
   const double discArea = kPi * discRadius * discRadius;  // mm^2
@@ -396,7 +438,22 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
           }
         }
         if (lit && !(maxComponent(colour) > 0.0f)) continue;  // x sends nothing toward the disc point
-        const LensSystem::FlareTrace t = lens.traceFromSceneWithFlare(ray, options, random, wavelength);
+        LensSystem::FlareTrace t;
+        if (ghosts) {
+          // The direct image, or one ghost; the weight over the choice's probability.
+          double p = 1.0;
+          if (!source.reflectedOnly && random() < kDirectShare) {
+            t = lens.traceFromSceneWithFlare(ray, ghosts->direct, random, wavelength);
+            p = kDirectShare;
+          } else {
+            const std::size_t g = ghosts->pick.sample(float(random()));
+            t = lens.traceFromSceneWithFlare(ray, ghosts->options[g], random, wavelength);
+            p = (source.reflectedOnly ? 1.0 : 1.0 - kDirectShare) * double(ghosts->pick.probability(g));
+          }
+          t.ray.transmittance /= p;
+        } else {
+          t = lens.traceFromSceneWithFlare(ray, options, random, wavelength);
+        }
         if (t.end != LensSystem::FlareTrace::End::Film) continue;
         // The direct image of an emitter or the sun is the camera paths'.
         if (source.reflectedOnly && t.reflections == 0) continue;

@@ -37,8 +37,12 @@
 // shutter's opening) decides whether the path starts: a source half hidden
 // from the lens is half seen. Each path carries the flux through its share
 // of the disc (radiance x cosines / the sampling densities), reflects or
-// refracts at every surface as the camera's flare paths do (the same
-// reflection limit, barrel and stop shape), and what reaches the film lands
+// refracts through the lens with the camera's reflection limit, barrel and
+// stop shape (with two reflections and no barrel each path makes one ghost,
+// picked by its strength, or a lamp's direct image: FlareOptions::ghost;
+// else it chooses at every surface, reflecting more often than R:
+// FlareOptions::reflectionBoost; either way with the weights that keep the
+// expected flux), and what reaches the film lands
 // in the pixel it hits (a box filter, as the camera's samples), as film
 // irradiance times the camera's exposure scale: the same units as the camera
 // paths' image, to which it is added.

@@ -327,7 +327,9 @@ std::optional<LightSample> LightSet::sample(const Vec3f& p, const Vec3f& n, floa
   }
   std::optional<LightSample> s;
   if (i < firstTriangle_) {
-    s = samplePunctual(posed(materials_->scene().lights[i], time), p);
+    // A still light as it is: posing copies it (its name and steps), per sample.
+    const PunctualLight& l = materials_->scene().lights[i];
+    s = l.motion.size() < 2 ? samplePunctual(l, p) : samplePunctual(posed(l, time), p);
   } else if (i < environmentIndex_) {
     s = sampleTriangle(posed(triangles_[i - firstTriangle_], time), p, u);
   } else if (auto e = environment_->sample(u)) {

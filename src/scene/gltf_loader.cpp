@@ -703,7 +703,7 @@ struct GltfLoader::Impl {
   tinygltf::Model model;
   Context ctx;
   std::vector<int> roots;
-  bool stillNoticed = false;  // the "--time on a file without animation" notice, once
+  bool stillNoticed = false;  // the notice of a moment asked of a file without animation, once
 
   Impl(const std::filesystem::path& file, int sceneIndex, Warnings& w, const SceneReadLimits& readLimits)
       : name(file.string()),
@@ -738,7 +738,8 @@ SceneDesc GltfLoader::load(const AnimationTime& time, SceneDesc* previous) {
   if (model.animations.empty() && time.seconds != 0 && !impl_->stillNoticed) {
     impl_->stillNoticed = true;
     impl_->warnings.warn(
-        fmt::format("--time {:g}: the file has no animation, so it renders as it is at rest", time.seconds));
+        fmt::format("at {:g} s: the file has no animation, so it renders as it is at rest, at every moment",
+                    time.seconds));
   }
   if (!model.animations.empty())
     desc.pose =

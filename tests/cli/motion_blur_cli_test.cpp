@@ -486,7 +486,7 @@ TEST(MotionBlurCli, TimeOnAStillSceneGivesANotice) {
   const RunResult r = runLensrt({"render", cornell, "--time", "2", "--rolling-shutter", "0.01", "--res",
                                  "16x16", "--spp", "1", "-o", (dir / "a.exr").string()});
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("--time 2: the file has no animation"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("at 2 s: the file has no animation"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("the rolling shutter and shutter curve change nothing"), std::string::npos) << r.err;
   const RunResult still =
       runLensrt({"render", cornell, "--res", "16x16", "--spp", "1", "-q", "-o", (dir / "b.exr").string()});

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -419,6 +420,53 @@ TEST(FlareLight, AReflectionBoostKeepsEveryGhostsFlux) {
   }
   std::printf("two-reflection paths on the film: %d boosted, %d plain\n", boostedGhostPaths, plainGhostPaths);
   EXPECT_GT(boostedGhostPaths, 2 * plainGhostPaths);
+}
+
+// A ghost made on purpose (FlareOptions::ghost): each path reflects at the
+// pair's two surfaces and refracts at every other, weighted R there and 1 - R
+// elsewhere, so the mean over paths is that ghost's flux in the
+// reflect-or-refract trace. The five strongest ghosts of dgauss-50mm at f/2.8
+// uncoated, 8.6 degrees off axis, 100 000 paths each against the 200 000
+// plain ones, about half of them reaching the film. Measured: within 1
+// standard error each, the made ghost's own error 13 to 22 times smaller;
+// ghost 10,9: 0.001485 against 0.001564 +- 0.000085. Injected: the forced
+// reflections weighted 1 (as if each had been picked with probability R)
+// give 190 to 240 times.
+TEST(FlareLight, AGhostMadeOnPurposeCarriesItsExpectedFlux) {
+  const LensSystem lens = stopped("dgauss-50mm", 2.8, Coating::None);
+  const int plainRays = 200000, rays = 100000;
+  const Ledger plain = ledger(lens, {2, 0.0, {}, 1.0}, plainRays, 11);
+  std::vector<std::pair<double, std::pair<int, int>>> strongest;
+  for (const auto& [pair, sum] : plain.ghosts) strongest.push_back({sum.w, pair});
+  std::sort(strongest.rbegin(), strongest.rend());
+  ASSERT_GE(strongest.size(), 5u);
+  const Vec3d direction{std::sin(0.15), 0.0, std::cos(0.15)};
+  for (std::size_t g = 0; g < 5; ++g) {
+    const std::pair<int, int> pair = strongest[g].second;
+    LensSystem::FlareOptions options{2, 0.0, {}, 1.0, pair};
+    SplitMix random{100 + g};
+    Ledger::Sum made;
+    for (int k = 0; k < rays; ++k) {
+      const auto [x, y] = discPoint(random, lens.frontApertureRadius());
+      const auto t = lens.traceFromSceneWithFlare(entering(direction, x, y), options, random);
+      if (t.end != End::Film) continue;
+      ASSERT_EQ(t.reflections, 2);
+      EXPECT_EQ(t.bounces[0].surface, pair.first);
+      EXPECT_EQ(t.bounces[1].surface, pair.second);
+      made.add(t.ray.transmittance);
+    }
+    const Ledger::Sum& reference = plain.ghosts.at(pair);
+    const double sigma = std::hypot(made.error(rays), reference.error(plainRays));
+    std::printf("ghost %d,%d made: %.6f +- %.6f (%d of %d paths on the film), by choice %.6f +- %.6f\n",
+                pair.first, pair.second, made.w / rays, made.error(rays), made.paths, rays,
+                reference.w / plainRays, reference.error(plainRays));
+    EXPECT_NEAR(made.w / rays, reference.w / plainRays, 4 * sigma);
+  }
+  // Only from the scene, and not with the barrel (whose scatters are reflections too).
+  LensSystem::FlareOptions barrel{2, 0.5, {}, 1.0, std::pair{10, 9}};
+  SplitMix random{1};
+  EXPECT_THROW(lens.traceFromSceneWithFlare(entering(direction, 0, 0), barrel, random),
+               std::invalid_argument);
 }
 
 }  // namespace
