@@ -191,34 +191,44 @@ TEST(FlareSources, TheSunsGhostsFromTheLightPassAreTheCameraPathsGhosts) {
   expectAgree(compare(dir / "sky.gltf", sun, 1024));
 }
 
-// A spot lamp 20 cm in front of a white wall 2 m away, facing the wall (so
-// the lens never sees the lamp itself): the bright patch it makes there is
+// A white wall 2 m before the camera and a spot lamp (light placed by
+// `lampPlacement`, shining down its local -Z) facing it, so that the lens
+// never sees the lamp itself; rendered with maximum depth 1 (the lamp's
+// light on the scene), the pass with 8192 spp's paths so that its own noise
+// counts little, and the pass checked against the camera paths.
+cli::QuadScene lampByWall(const char* lampPlacement) {
+  cli::QuadScene q;
+  q.quads = {{{{-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}}, 0}};
+  q.materials =
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0,"roughnessFactor":1}})";
+  q.light = R"({"type":"spot","intensity":50,"spot":{"outerConeAngle":0.6}})";
+  q.lightPlacement = lampPlacement;
+  q.cameraPlacement = R"("translation":[0,0,0])";
+  return q;
+}
+void expectLampByWallAgrees(const cli::QuadScene& q) {
+  const TempDir dir;
+  cli::writeFile(dir / "wall.gltf", cli::quadsGltf(q));
+  EnvironmentSpec none;
+  none.none = true;
+  expectAgree(compare(dir / "wall.gltf", none, 1024, 1, 8192));
+}
+
+// The lamp 10 cm before the wall: the bright patch it makes there is
 // what a lamp by a wall looks like, and its ghosts are the pass's
 // (FlareScene::litSurfaces) once a camera path has a scattering event
 // (maximum depth 1). Measured: the pass 0.07812 against the camera paths'
 // 0.08068 (direct image 1.82); over 10 seeds the ratio 0.96 on average
 // (0.92 to 1.04, standard deviation 0.03), the pass alone within 0.5% of its
 // reflect-or-refract paths' total (65 536 spp's paths, three seeds each), so
-// the test's 10% catches a bias of about that. The pass takes 8192 spp's
-// paths here, so that its own noise counts little. Injected: the pass
+// the test's 10% catches a bias of about that. Injected: the pass
 // depositing the lit wall's direct image too gives 1.95 (24 times); without
 // the wall's cosine toward the lamp in the denominator (the lamp's light as
 // if it met the wall head on), 0.0401 (0.50).
 TEST(FlareSources, ALampLitWallsGhostsFromTheLightPassAreTheCameraPathsGhosts) {
-  const TempDir dir;
-  cli::QuadScene q;
-  q.quads = {{{{-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}}, 0}};
-  q.materials =
-      R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0,"roughnessFactor":1}})";
-  q.light = R"({"type":"spot","intensity":50,"spot":{"outerConeAngle":0.6}})";
   // Aimed 60 degrees off the wall's normal, toward +x: its light meets the
   // wall at 26 to 94 degrees, so the cosines count.
-  q.lightPlacement = R"("translation":[0.1,0.15,-1.9],"rotation":[0,-0.5,0,0.8660254])";
-  q.cameraPlacement = R"("translation":[0,0,0])";
-  cli::writeFile(dir / "wall.gltf", cli::quadsGltf(q));
-  EnvironmentSpec none;
-  none.none = true;
-  expectAgree(compare(dir / "wall.gltf", none, 1024, 1, 8192));
+  expectLampByWallAgrees(lampByWall(R"("translation":[0.1,0.15,-1.9],"rotation":[0,-0.5,0,0.8660254])"));
 }
 
 // The same lamp 40 cm before the wall, aimed at it, beside a smooth glass
@@ -232,21 +242,12 @@ TEST(FlareSources, ALampLitWallsGhostsFromTheLightPassAreTheCameraPathsGhosts) {
 // Injected: camera paths that skip the lamp through the glass too (the pass
 // never taking that light) give the camera paths 0.0832, a ratio of 0.78.
 TEST(FlareSources, ALampsLightThroughGlassStaysWithTheCameraPaths) {
-  const TempDir dir;
-  cli::QuadScene q;
-  q.quads = {{{{-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}}, 0},
-             {{{0.1f, -1, -2}, {0.1f, -1, -1.55f}, {0.1f, 1, -1.55f}, {0.1f, 1, -2}}, 1}};
-  q.materials =
-      R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0,"roughnessFactor":1}},)"
-      R"({"doubleSided":true,"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":0},)"
-      R"("extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})";
-  q.light = R"({"type":"spot","intensity":50,"spot":{"outerConeAngle":0.6}})";
-  q.lightPlacement = R"("translation":[0.05,0.15,-1.6])";
-  q.cameraPlacement = R"("translation":[0,0,0])";
-  cli::writeFile(dir / "glass.gltf", cli::quadsGltf(q));
-  EnvironmentSpec none;
-  none.none = true;
-  expectAgree(compare(dir / "glass.gltf", none, 1024, 1, 8192));
+  cli::QuadScene q = lampByWall(R"("translation":[0.05,0.15,-1.6])");
+  q.quads.push_back({{{0.1f, -1, -2}, {0.1f, -1, -1.55f}, {0.1f, 1, -1.55f}, {0.1f, 1, -2}}, 1});
+  q.materials +=
+      R"(,{"doubleSided":true,"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,)"
+      R"("roughnessFactor":0},"extensions":{"KHR_materials_transmission":{"transmissionFactor":1}}})";
+  expectLampByWallAgrees(q);
 }
 
 // The pass's bits (an emitter and the sun together) do not depend on the threads.
