@@ -78,7 +78,7 @@ class RenderJob {
   // --flare on with the full lens: the light pass (render/flare_light_pass.h)
   // of the scene's punctual lights, still emitters and environment sun (and,
   // with a maximum depth of 1 or more, the lamps' lit surfaces) for these
-  // settings; none otherwise. spp x pixels / 8 paths (at least 65 536) for
+  // settings; none otherwise. spp x pixels / 10 paths (at least 65 536) for
   // each light, the emitters together and the sun (an eighth of that for a
   // lamp's lit surfaces), from the render's seed. Camera paths of
   // a flare camera skip these sources after a lens reflection, so every

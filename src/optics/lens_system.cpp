@@ -365,33 +365,21 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, bool fromFilm,
       const double r = passes ? 1.0 - surfaceTransmittance(coating, n1, n2, cosI,
                                                            std::min(1.0, -dot(n, refracted)), wavelengthNm)
                               : 1.0;
+      // Reflect or refract, and the weight that keeps the expected flux.
+      bool reflect = false;
       if (options.ghost) {
-        const bool reflect = (!towardScene && result.reflections == 0 && i == options.ghost->first) ||
-                             (towardScene && result.reflections == 1 && i == options.ghost->second);
-        if (reflect) {
-          weight *= r;
-          d = d + n * (2.0 * cosI);
-          towardScene = !towardScene;
-          bounce(i, false);
-        } else {
-          weight *= 1.0 - r;
-          if (!passes) return absorb();
-          d = refracted;
-        }
-        i += towardScene ? -1 : 1;
-        continue;
-      }
-      const bool mayReflect = result.reflections < options.maxReflections;
-      const double q = mayReflect && options.reflectionBoost > 1.0
-                           ? std::max(r, std::min(0.5, options.reflectionBoost * r))
-                           : r;
-      if (mayReflect && random() < q) {
-        if (q != r) weight *= r / q;
-        d = d + n * (2.0 * cosI);
-        towardScene = !towardScene;
-        bounce(i, false);
+        reflect = (!towardScene && result.reflections == 0 && i == options.ghost->first) ||
+                  (towardScene && result.reflections == 1 && i == options.ghost->second);
+        weight *= reflect ? r : 1.0 - r;
       } else {
-        if (!mayReflect) {
+        const bool mayReflect = result.reflections < options.maxReflections;
+        const double q = mayReflect && options.reflectionBoost > 1.0
+                             ? std::max(r, std::min(0.5, options.reflectionBoost * r))
+                             : r;
+        reflect = mayReflect && random() < q;
+        if (reflect) {
+          if (q != r) weight *= r / q;
+        } else if (!mayReflect) {
           // Made to refract: the reflected part R is dropped (all of it
           // under total internal reflection).
           result.truncated += weight * r;
@@ -399,6 +387,12 @@ LensSystem::FlareTrace LensSystem::flareTrace(const LensRay& ray, bool fromFilm,
         } else if (q != r) {
           weight *= (1.0 - r) / (1.0 - q);
         }
+      }
+      if (reflect) {
+        d = d + n * (2.0 * cosI);
+        towardScene = !towardScene;
+        bounce(i, false);
+      } else {
         if (!passes) {
           result.end = FlareTrace::End::Blocked;
           result.ray = {o, d, 0.0};

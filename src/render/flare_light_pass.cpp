@@ -168,8 +168,7 @@ Spectrum litSurfaceReflection(const MaterialTable& materials, const SurfaceHit& 
   const ShadingPoint sp = evaluateMaterial(materials, hit, wo, lambdas);
   const GltfBsdf bsdf(sp.bsdf, sp.frame, sp.coatFrame, wo);
   const Vec3f& ng = sp.geometricNormal;
-  const bool above = dot(wi, ng) > 0;
-  if (!(above || bsdf.transmits()) || above != (dot(wi, sp.frame.n) > 0)) return Spectrum(0.0f);
+  if (!receivesLight(sp, bsdf, wi)) return Spectrum(0.0f);
   const float cosIn = std::abs(dot(wi, ng));
   if (!(cosIn > 1e-6f)) return Spectrum(0.0f);
   return bsdf.evalPdf(wo, wi).f * (std::abs(dot(wi, sp.frame.n)) * std::abs(dot(wo, ng)) / cosIn);

@@ -164,7 +164,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
     if (!lights_.empty()) {
       const std::optional<LightSample> ls =
           lights_.sample(hit->position, sp.frame.n, u.get1D(0), u.get2D(1), ray.time);
-      if (ls && (dot(ls->wi, ng) > 0 || bsdf.transmits()) && consistent(ls->wi)) {
+      if (ls && receivesLight(sp, bsdf, ls->wi)) {
         const BsdfValue bv = bsdf.evalPdf(wo, ls->wi);
         const Spectrum f = bv.f * std::abs(dot(ls->wi, sp.frame.n));
         if (maxComponent(f) > 0) {
@@ -179,11 +179,12 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
           // with nothing in between, is the flare light pass's (its lit
           // surfaces' ghosts). Through a glass sheet it stays here: the
           // pass's rays stop at the sheet.
-          const bool passTakes =
-              depth == 0 && afterLensReflection && ls->flareLamp && !scene_.occluded(shadow);
           // Punctual lights shine through thin-walled glass (see
           // thinGlassTransmittance); every other shadow ray stops at anything.
-          const Spectrum visible = passTakes ? Spectrum(0.0f)
+          const bool passLamp = depth == 0 && afterLensReflection && ls->flareLamp;
+          const Spectrum visible = passLamp ? (!scene_.occluded(shadow) || !thinGlass_
+                                                   ? Spectrum(0.0f)
+                                                   : thinGlassTransmittance(shadow, target, finite, lambda))
                                    : ls->delta && thinGlass_
                                        ? thinGlassTransmittance(shadow, target, finite, lambda)
                                        : Spectrum(scene_.occluded(shadow) ? 0.0f : 1.0f);

@@ -49,6 +49,15 @@ struct ShadingPoint {
 // a spectral path goes on at its hero wavelength alone from there.
 bool isDispersiveVolume(const Material& m);
 
+// Whether light arriving from wi (unit, world) can scatter at `sp` by
+// `bsdf`: from the geometric normal's front unless the BSDF transmits, and on
+// the same side of the geometric and the shading normal (otherwise a
+// reflection would pass through the surface or a refraction stay in front).
+inline bool receivesLight(const ShadingPoint& sp, const GltfBsdf& bsdf, const Vec3f& wi) {
+  const bool above = dot(wi, sp.geometricNormal) > 0;
+  return (above || bsdf.transmits()) && above == (dot(wi, sp.frame.n) > 0);
+}
+
 // wo: unit world direction toward the viewer. The colours are turned into
 // `lambda`'s spectra (RGB transport keeps them).
 ShadingPoint evaluateMaterial(const MaterialTable& materials, const SurfaceHit& hit, const Vec3f& wo,
