@@ -20,8 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "api/camera_options.h"
-#include "app/camera_flags.h"
+#include "api/camera_factory.h"
+#include "api/render_spec.h"
+#include "app/option_flags.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "render/environment.h"
@@ -76,9 +77,9 @@ int main(int argc, char** argv) {
   CLI::App app{"Time the full-lens camera against the pinhole on one scene.", "bench_cameras"};
   std::string scenePath = std::string(LENSRT_SOURCE_DIR) + "/scenes/dof_row.gltf";
   int spp = 16, width = 320, height = 180, repeat = 3, threads = 0;
-  CameraOptions options;
-  options.lens = "dgauss-50mm";
-  options.fNumber = 4.0;
+  RenderSpec spec;
+  spec.camera.lens = "dgauss-50mm";
+  spec.camera.fNumber = 4.0;
   app.add_option("scene", scenePath, "glTF scene");
   app.add_option("--spp", spp, "samples per pixel")->check(CLI::PositiveNumber);
   app.add_option("--width", width, "image width")->check(CLI::PositiveNumber);
@@ -87,7 +88,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "render threads (0: all)");
   std::string save;
   app.add_option("--save", save, "also write PREFIX_pinhole.png and PREFIX_lens.png (previews)");
-  addCameraOptions(app, options);
+  const OptionFlags flags(app, spec, kRenderCommand, {"camera", "shutter", "flare"});
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -106,16 +107,17 @@ int main(int argc, char** argv) {
     FilmGeometry film;
     film.width = width;
     film.height = height;
-    CameraOptions pinholeOptions = options, lensOptions = options;
-    pinholeOptions.model = "pinhole";
-    lensOptions.model = "lens";
-    CameraOptions flatOptions = lensOptions;  // the full lens at the d line only
-    flatOptions.dispersion = "off";
+    CameraSpec pinholeOptions = spec.camera, lensOptions = spec.camera;
+    pinholeOptions.model = CameraModel::Pinhole;
+    lensOptions.model = CameraModel::Lens;
+    CameraSpec flatOptions = lensOptions;  // the full lens at the d line only
+    flatOptions.dispersion = false;
+    const auto request = [&](const CameraSpec& c) { return CameraRequest{c, spec.shutter, spec.flare}; };
     std::unique_ptr<Camera> pinhole, lens, flat;
     const double buildSeconds =
-        cpuSeconds([&] { lens = makeCamera(lensOptions, gltfCamera, film, hit, warnings); });
-    pinhole = makeCamera(pinholeOptions, gltfCamera, film, hit, warnings);
-    if (lens->tracesWavelengths()) flat = makeCamera(flatOptions, gltfCamera, film, hit, warnings);
+        cpuSeconds([&] { lens = makeCamera(request(lensOptions), gltfCamera, film, hit, warnings); });
+    pinhole = makeCamera(request(pinholeOptions), gltfCamera, film, hit, warnings);
+    if (lens->tracesWavelengths()) flat = makeCamera(request(flatOptions), gltfCamera, film, hit, warnings);
     RenderSettings settings;
     settings.samplesPerPixel = spp;
     settings.threads = threads;
@@ -128,8 +130,9 @@ int main(int argc, char** argv) {
     }
     if (!save.empty()) {
       writeImage(save + "_pinhole.png", renderImage(*pinhole, integrator, settings).image,
-                 cameraMetadata(*pinhole));
-      writeImage(save + "_lens.png", renderImage(*lens, integrator, settings).image, cameraMetadata(*lens));
+                 cameraMetadata(*pinhole, cameraExposure(pinholeOptions, spec.shutter)));
+      writeImage(save + "_lens.png", renderImage(*lens, integrator, settings).image,
+                 cameraMetadata(*lens, cameraExposure(lensOptions, spec.shutter)));
     }
     long pinholePassed = 0, lensPassed = 0, lensPassedOne = 0;
     const double camPinhole = cameraSeconds(*pinhole, spp, true, pinholePassed);

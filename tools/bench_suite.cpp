@@ -39,10 +39,12 @@
 #include <string>
 #include <vector>
 
-#include "api/camera_options.h"
+#include "api/camera_factory.h"
+#include "api/camera_models.h"
 #include "api/render_job.h"
 #include "api/render_options.h"
-#include "app/camera_flags.h"
+#include "api/render_spec.h"
+#include "app/option_flags.h"
 #include "core/error.h"
 #include "render/environment.h"
 #include "render/integrator.h"
@@ -86,7 +88,7 @@ struct Options {
   bool countRays = false;
   bool scaling = false;
   std::string perfControl, perfAck;  // perf record's control and ack fifos
-  CameraOptions camera;
+  RenderSpec spec;                   // its camera, shutter and flare: lensrt render's flags
 };
 
 // Everything a render needs but the camera, built step by step so each step can be timed.
@@ -123,8 +125,9 @@ struct Setup {
   }
 
   std::unique_ptr<Camera> camera(const Options& o, const std::string& model, Warnings& warnings) const {
-    CameraOptions c = o.camera;
-    c.model = model;
+    CameraSpec c = o.spec.camera;
+    for (const CameraModelInfo& m : cameraModels())
+      if (m.name == model) c.model = m.model;
     FilmGeometry film;
     film.width = width;
     film.height = height;
@@ -132,7 +135,7 @@ struct Setup {
       const auto h = scene->intersect(ray);
       return h ? std::optional<double>(h->t) : std::nullopt;
     };
-    return makeCamera(c, gltfCamera, film, hit, warnings);
+    return makeCamera(CameraRequest{c, o.spec.shutter, o.spec.flare}, gltfCamera, film, hit, warnings);
   }
 
   json sizes() const {
@@ -590,9 +593,10 @@ int main(int argc, char** argv) {
   CLI::App app{"The measuring half of tools/bench: prints JSON.", "bench_suite"};
   app.require_subcommand(1);
   Options o;
-  o.camera.lens = "dgauss-50mm";
-  o.camera.fNumber = 2.0;
+  o.spec.camera.lens = "dgauss-50mm";
+  o.spec.camera.fNumber = 2.0;
   std::vector<CLI::App*> commands;
+  std::vector<std::unique_ptr<OptionFlags>> flags;
   for (const char* name : {"rays", "render", "startup"}) {
     CLI::App* c = app.add_subcommand(name);
     c->add_option("scene", o.scene, "glTF scene")->required();
@@ -609,7 +613,8 @@ int main(int argc, char** argv) {
     c->add_flag("--scaling", o.scaling, "render: the first model on one thread too");
     c->add_option("--perf-control", o.perfControl, "render: perf's control fifo (enabled around renders)");
     c->add_option("--perf-ack", o.perfAck, "render: perf's ack fifo");
-    addCameraOptions(*c, o.camera);
+    flags.push_back(std::make_unique<OptionFlags>(*c, o.spec, kRenderCommand,
+                                                  std::vector<std::string>{"camera", "shutter", "flare"}));
     commands.push_back(c);
   }
   CLI11_PARSE(app, argc, argv);

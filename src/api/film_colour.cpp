@@ -18,25 +18,7 @@ namespace lensrt {
 
 namespace {
 
-constexpr double kMinKelvin = 1500, kMaxKelvin = 25000;
-
-// --white-balance as a colour temperature, or none for "none" and "auto".
-std::optional<double> parseKelvin(const std::string& text) {
-  if (text == "none" || text == "auto") return std::nullopt;
-  std::string number = text;
-  if (!number.empty() && (number.back() == 'K' || number.back() == 'k')) number.pop_back();
-  char* end = nullptr;
-  const double k = std::strtod(number.c_str(), &end);
-  if (number.empty() || *end != '\0' || !(k >= kMinKelvin && k <= kMaxKelvin))
-    throw UsageError(
-        "--white-balance",
-        fmt::format("expected auto, none or a colour temperature from {:g} to {:g} K (e.g. 5500), "
-                    "got '{}'",
-                    kMinKelvin, kMaxKelvin, text));
-  return k;
-}
-
-std::string responseName(const CameraOptions& o) {
+std::string responseName(const ColourSpec& o) {
   return o.sensorResponse.empty() ? std::string(kCie1931Response) : o.sensorResponse;
 }
 
@@ -54,25 +36,8 @@ std::function<double(double)> lightOfColour(const Rgb& c) {
   return [s](double nm) { return double(s(float(nm))) * d65(nm); };
 }
 
-// The checks that need no file: each flag's syntax and how they combine.
-void checkColourFlags(const CameraOptions& o) {
-  if (o.spectral == "off") {
-    if (!o.sensorResponse.empty())
-      throw UsageError("--sensor-response", "needs spectral transport (--spectral on)");
-    if (!o.whiteBalance.empty())
-      throw UsageError("--white-balance", "needs spectral transport (--spectral on)");
-    if (o.outputSpace != "srgb")
-      throw UsageError("--output-space", "needs spectral transport (--spectral on)");
-    return;
-  }
-  if (!o.whiteBalance.empty()) parseKelvin(o.whiteBalance);
-  if (o.outputSpace != "camera" && !parseColorSpace(o.outputSpace))
-    throw UsageError("--output-space",
-                     "expected srgb, rec2020, acescg, xyz or camera, got '" + o.outputSpace + "'");
-}
-
-void checkCameraSpace(const CameraOptions& o, const SensorResponse& sensor) {
-  if (o.outputSpace == "camera" && sensor.cie1931)
+void checkCameraSpace(const ColourSpec& o, const SensorResponse& sensor) {
+  if (!o.outputSpace && sensor.cie1931)
     throw UsageError("--output-space",
                      "camera is the RGB of a camera's response; the CIE 1931 observer has none "
                      "(choose --sensor-response, or srgb, rec2020, acescg, xyz)");
@@ -114,24 +79,24 @@ CameraRgb cameraRgb(const SensorResponse& sensor, const FilmResponse& film, doub
 
 }  // namespace
 
-void checkColourOptions(const CameraOptions& o) {
-  checkColourFlags(o);
-  if (o.spectral == "off") return;
+void checkColourSpec(const ColourSpec& o) {
+  if (!o.spectral) return;
   // An unknown name or a bad file fails before the scene loads.
   checkCameraSpace(o, loadSensorResponse(responseName(o)));
 }
 
-FilmColour filmColour(const CameraOptions& o, const std::optional<Rgb>& sceneLight, Warnings& warnings) {
-  checkColourFlags(o);
-  if (o.spectral == "off") return {};
+FilmColour filmColour(const ColourSpec& o, const std::optional<Rgb>& sceneLight, Warnings& warnings) {
+  if (!o.spectral) return {};
   const SensorResponse sensor = loadSensorResponse(responseName(o));  // read once here
   checkCameraSpace(o, sensor);
   // Cameras balance automatically by default, as a camera does; the CIE
   // observer records colorimetry (D65 is white).
-  const std::string wb = !o.whiteBalance.empty() ? o.whiteBalance : (sensor.cie1931 ? "none" : "auto");
-  const bool cameraSpace = o.outputSpace == "camera";
-  const ColorSpace& space = colorSpace(cameraSpace ? ColorSpaceId::Srgb : *parseColorSpace(o.outputSpace));
-  if (sensor.cie1931 && wb == "none" && space.id == ColorSpaceId::Srgb)
+  using Kind = WhiteBalance::Kind;
+  const WhiteBalance wb =
+      o.whiteBalance ? *o.whiteBalance : WhiteBalance{sensor.cie1931 ? Kind::None : Kind::Auto};
+  const bool cameraSpace = !o.outputSpace;
+  const ColorSpace& space = colorSpace(o.outputSpace.value_or(ColorSpaceId::Srgb));
+  if (sensor.cie1931 && wb.kind == Kind::None && space.id == ColorSpaceId::Srgb)
     // The built-in response lives as long as the program: a non-owning pointer.
     return {std::shared_ptr<const FilmResponse>(std::shared_ptr<const void>(), &FilmResponse::cie1931Srgb()),
             std::nullopt};
@@ -147,10 +112,10 @@ FilmColour filmColour(const CameraOptions& o, const std::optional<Rgb>& sceneLig
   const auto d65AtUnitY = atUnitY([](double nm) { return d65(nm); });
   std::function<double(double)> neutral = d65AtUnitY;
   info.whiteBalance = "none";
-  if (const std::optional<double> kelvin = parseKelvin(wb)) {
-    neutral = atUnitY([k = *kelvin](double nm) { return whiteSpectrum(k, nm); });
-    info.whiteBalance = fmt::format("{:g}K", *kelvin);
-  } else if (wb == "auto") {
+  if (wb.kind == Kind::Kelvin) {
+    neutral = atUnitY([k = wb.kelvin](double nm) { return whiteSpectrum(k, nm); });
+    info.whiteBalance = fmt::format("{:g}K", wb.kelvin);
+  } else if (wb.kind == Kind::Auto) {
     if (sceneLight && maxComponent(*sceneLight) > 0) {
       neutral = atUnitY(lightOfColour(*sceneLight));
       const Vec2d xy = chromaticity(spectrumToXyz(neutral));
@@ -168,7 +133,7 @@ FilmColour filmColour(const CameraOptions& o, const std::optional<Rgb>& sceneLig
   if (sensor.cie1931) {
     // XYZ adapted from the neutral's white to the output's (CIE XYZ without a
     // white balance is left alone).
-    const Mat3d adapt = (space.id == ColorSpaceId::Xyz && wb == "none")
+    const Mat3d adapt = (space.id == ColorSpaceId::Xyz && wb.kind == Kind::None)
                             ? Mat3d{}
                             : bradfordAdaptation(spectrumToXyz(neutral), target);
     return {std::make_shared<const FilmResponse>(FilmResponse::make(

@@ -20,7 +20,7 @@
 #include <optional>
 #include <string>
 
-#include "api/camera_options.h"
+#include "api/colour_spec.h"
 #include "core/warnings.h"
 #include "render/film_response.h"
 #include "sensor/camera_rgb.h"
@@ -39,14 +39,15 @@ struct FilmColour {
 // `sceneLight`: the colour of the scene's dominant light
 // (RenderJob::dominantLightColour), for --white-balance auto. Throws
 // UsageError for bad options.
-FilmColour filmColour(const CameraOptions& options, const std::optional<Rgb>& sceneLight, Warnings& warnings);
+FilmColour filmColour(const ColourSpec& colour, const std::optional<Rgb>& sceneLight, Warnings& warnings);
 
 // "rgb", or "spectral:" and the response's description: part of a render's
 // identity (a checkpoint resumes, and tiles merge, only with the same transport).
 std::string transportDescription(const FilmResponse* response);
 
-// The colour options' checks (part of checkCameraOptions). Throws UsageError.
-void checkColourOptions(const CameraOptions& options);
+// The checks that need the response's file (an unknown name or a bad file
+// fails before the scene loads). Throws UsageError / InputError.
+void checkColourSpec(const ColourSpec& colour);
 
 // A camera's RGB to XYZ: the least-squares 3x3 over the ColorChecker's 24
 // patches lit by `illuminant` (as pbrt-v4's PixelSensor fits it).

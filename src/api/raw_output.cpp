@@ -24,8 +24,7 @@ std::array<double, 9> rowMajor(const Mat3d& m) {
   return out;
 }
 
-std::array<double, 9> rawColorMatrix(const CameraOptions& options) {
-  const std::optional<ColorSpaceId> id = parseColorSpace(options.outputSpace);
+std::array<double, 9> rawColorMatrix(const std::optional<ColorSpaceId>& id) {
   if (!id || *id == ColorSpaceId::Srgb) return kXyzToLinearSrgb;
   const ColorSpace& space = colorSpace(*id);
   const Vec3d d65 = colorSpace(ColorSpaceId::Srgb).rgbToXyz * Vec3d{1, 1, 1};
@@ -62,7 +61,8 @@ void checkRawOutput(const RawOutputOptions& o) {
 
 void writeRawOutput(const RawOutputOptions& o, const Image& image,
                     const std::optional<SensorReadout>& readout, const Camera& camera,
-                    const CameraOptions& options, const std::optional<CameraRgb>& cameraRgb) {
+                    const std::optional<ColorSpaceId>& outputSpace, const Exposure& exposure,
+                    const std::optional<CameraRgb>& cameraRgb) {
   const CfaPattern pattern = *parseCfaPattern(o.cfa);
   std::optional<Image> inCamera;
   if (cameraRgb) inCamera = cameraChannels(image, readout, *cameraRgb);
@@ -80,12 +80,12 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
       d.pattern.name[std::size_t(y * 2 + x)] = "RGB"[colour];
     }
   d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
-  d.colorMatrix1 = cameraRgb ? rowMajor(cameraRgb->xyzToCamera) : rawColorMatrix(options);
+  d.colorMatrix1 = cameraRgb ? rowMajor(cameraRgb->xyzToCamera) : rawColorMatrix(outputSpace);
   if (cameraRgb)
     d.asShotNeutral = {cameraRgb->asShotNeutral.x, cameraRgb->asShotNeutral.y, cameraRgb->asShotNeutral.z};
-  d.exposureSeconds = shutterSeconds(options);
-  d.iso = options.exposure == "physical" ? options.iso.value_or(100.0)
-                                         : (readout ? readout->params.baseIso : 100.0);
+  d.exposureSeconds = exposure.shutterSeconds;
+  d.iso =
+      exposure.mode == ExposureMode::Physical ? exposure.iso : (readout ? readout->params.baseIso : 100.0);
   d.fNumber = info.fNumber;
   d.focalLengthMm = info.focalLengthMm;
   writeDng(o.file, mosaic, d);

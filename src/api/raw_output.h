@@ -7,9 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "api/camera_options.h"
 #include "api/sensor_readout.h"
 #include "camera/camera.h"
+#include "camera/exposure.h"
+#include "color/color_space.h"
 #include "image/image.h"
 
 namespace lensrt {
@@ -29,9 +30,11 @@ void checkRawOutput(const RawOutputOptions& options);
 // holds camera RGB, unbalanced, with the response's ColorMatrix1 and the
 // white balance as AsShotNeutral, as a camera's raw file. Otherwise the
 // camera is the image's RGB: ColorMatrix1 is XYZ to the output space (linear
-// sRGB by default) under D65, AsShotNeutral 1, 1, 1.
+// sRGB by default) under D65, AsShotNeutral 1, 1, 1. `exposure` gives the
+// file's exposure time and ISO.
 void writeRawOutput(const RawOutputOptions& options, const Image& image,
                     const std::optional<SensorReadout>& readout, const Camera& camera,
-                    const CameraOptions& cameraOptions, const std::optional<CameraRgb>& cameraRgb);
+                    const std::optional<ColorSpaceId>& outputSpace, const Exposure& exposure,
+                    const std::optional<CameraRgb>& cameraRgb);
 
 }  // namespace lensrt

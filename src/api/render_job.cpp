@@ -161,7 +161,8 @@ std::string RenderJob::environmentDescription() const {
   return (defaultEnvironment_ ? "default " : "") + environment_->describe();
 }
 
-std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warnings& warnings) const {
+RenderJob::MadeCamera RenderJob::makeCamera(const CameraSpec& camera, const ShutterSpec& shutter,
+                                            const FlareSpec& flare, Warnings& warnings) const {
   const HitDistance hitDistance = [this](const Ray& ray) -> std::optional<double> {
     const std::optional<SurfaceHit> hit = scene_->geometry().intersect(ray);
     return hit ? std::optional<double>(hit->t) : std::nullopt;
@@ -170,17 +171,17 @@ std::unique_ptr<Camera> RenderJob::makeCamera(const CameraOptions& options, Warn
     FilmGeometry raster;
     raster.width = width_;
     raster.height = height_;
-    CameraOptions atTime = options;
-    atTime.timeSeconds = scene_->options().time.seconds;
-    return lensrt::makeCamera(atTime, gltfCamera_, raster, hitDistance, warnings);
+    const CameraRequest request{camera, shutter, flare, scene_->options().time.seconds};
+    MadeCamera made;
+    made.camera = lensrt::makeCamera(request, gltfCamera_, raster, hitDistance, warnings, &made.flareLens);
+    return made;
   } catch (const std::invalid_argument& e) {
     throw InputError(scene_->options().file, "camera '" + gltfCamera_.name + "': " + e.what());
   }
 }
 
-std::optional<ShutterTiming> RenderJob::shutterTiming(const CameraOptions& options,
-                                                      Warnings& warnings) const {
-  ShutterTiming timing = lensrt::shutterTiming(options);
+std::optional<ShutterTiming> RenderJob::shutterTiming(const ShutterSpec& shutter, Warnings& warnings) const {
+  ShutterTiming timing = shutter.timing();
   if (scene_->geometry().desc().motionSteps > 0) {
     // The glTF camera's node moves (unless a pose replaced it): rays follow it.
     if (!gltfCamera_.motion.empty() && !frame_.worldFromCamera) {
@@ -194,7 +195,7 @@ std::optional<ShutterTiming> RenderJob::shutterTiming(const CameraOptions& optio
                                                 scene_->options().time.spanSeconds, timing.spanSeconds()));
     return timing;
   }
-  if (!options.rollingShutter.empty() || options.shutterCurve != "box")
+  if (shutter.readoutSeconds > 0 || shutter.rampFraction > 0)
     warnings.warn(fmt::format(
         "{}: nothing in the scene moves, so the rolling shutter and shutter curve change "
         "nothing",
@@ -210,9 +211,7 @@ RenderJobResult RenderJob::render(const Camera& camera, const RenderSettings& se
     Progress progress(
         std::uint64_t(film.width) * std::uint64_t(film.height) * std::uint64_t(settings.samplesPerPixel),
         Progress::styleFor(stderr, quiet));
-    RenderSettings withFlare = settings;
-    if (!withFlare.flareLight) withFlare.flareLight = flareLight(camera, settings);
-    result.output = renderImage(camera, *integrator_, withFlare, &progress);
+    result.output = renderImage(camera, *integrator_, settings, &progress);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -229,29 +228,25 @@ RenderJobResult RenderJob::renderPasses(const Camera& camera, const RenderSettin
                       Progress::styleFor(stderr, quiet));
     finished = lensrt::renderPasses(camera, *integrator_, settings, state, &control, &progress);
   }
-  const std::shared_ptr<const FlareImage> flare =
-      settings.flareLight ? settings.flareLight : flareLight(camera, settings);
-  result.output = renderOutput(camera, state, flare.get());
+  result.output = renderOutput(camera, state, settings.flareLight.get());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
-std::shared_ptr<const FlareImage> RenderJob::flareLight(const Camera& camera,
+std::shared_ptr<const FlareImage> RenderJob::flareLight(const LensCamera& lens,
                                                         const RenderSettings& settings) const {
-  const auto* lens = dynamic_cast<const LensCamera*>(&camera);
-  if (!lens || !lens->flare()) return nullptr;
   // Every punctual light, the still emitters and the environment's sun; each
   // path's shadow ray says whether the scene hides its source from the lens.
   // The lamps' light on the scene where camera paths would take it, by
   // next-event estimation at their first vertex.
   const FlareScene sources{&scene_->geometry(), lights_.get(), environment_.get(),
                            frame_.maxDepth >= 1 ? &scene_->materials() : nullptr};
-  const FilmGeometry& film = camera.film();
+  const FilmGeometry& film = lens.film();
   const std::uint64_t paths =
       std::max<std::uint64_t>(65536, std::uint64_t(std::max(1, settings.samplesPerPixel)) *
                                          std::uint64_t(film.width) * std::uint64_t(film.height) / 10);
   return std::make_shared<const FlareImage>(
-      flareLightPass(*lens, scene_->geometry().desc().lights, paths, settings.seed,
+      flareLightPass(lens, scene_->geometry().desc().lights, paths, settings.seed,
                      settings.filmResponse.get(), settings.threads, settings.aovs.variance, sources));
 }
 
@@ -278,8 +273,9 @@ ImageMetadata RenderJob::identity(const Camera& camera, const RenderSettings& se
   };
 }
 
-ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& settings,
-                                  const RenderJobResult& result, const std::string& commandLine) const {
+ImageMetadata RenderJob::metadata(const Camera& camera, const Exposure& exposure,
+                                  const RenderSettings& settings, const RenderJobResult& result,
+                                  const std::string& commandLine, const ImageMetadata& identity) const {
   const RenderOutput& out = result.output;
   const std::uint64_t pixels = std::uint64_t(out.image.width) * std::uint64_t(out.image.height);
   ImageMetadata metadata{
@@ -303,8 +299,9 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const RenderSettings& se
     metadata["lensrt:region"] = PixelRegion{out.image.originX, out.image.originX + out.image.width,
                                             out.image.originY, out.image.originY + out.image.height}
                                     .describe();
-  metadata.merge(identity(camera, settings));
-  metadata.merge(cameraMetadata(camera));
+  ImageMetadata ids = identity;
+  metadata.merge(ids);
+  metadata.merge(cameraMetadata(camera, exposure));
   // The film's colour: the transport, and what its RGB means.
   const FilmResponse* response = settings.filmResponse.get();
   metadata["lensrt:spectral"] = response ? "on" : "off";

@@ -7,10 +7,11 @@
 #include <optional>
 #include <string>
 
-#include "api/camera_options.h"
+#include "api/camera_factory.h"
 #include "api/render_options.h"
 #include "api/scene.h"
 #include "camera/camera.h"
+#include "camera/lens_camera.h"
 #include "core/transform.h"
 #include "core/warnings.h"
 #include "image/image.h"
@@ -61,29 +62,37 @@ class RenderJob {
   int height() const { return height_; }
   const Integrator& integrator() const { return *integrator_; }
 
-  // One of the four models for these options, framed by the glTF camera;
-  // --focus auto asks the scene what the focus pixel sees.
-  std::unique_ptr<Camera> makeCamera(const CameraOptions& options, Warnings& warnings) const;
+  // One of the models for this request, framed by the glTF camera (its
+  // keyframed settings read at the scene's time); --focus auto asks the
+  // scene what the focus pixel sees. `flareLens`: the full lens when it
+  // makes stray light, else null.
+  struct MadeCamera {
+    std::unique_ptr<Camera> camera;
+    const LensCamera* flareLens = nullptr;
+  };
+  MadeCamera makeCamera(const CameraSpec& camera, const ShutterSpec& shutter, const FlareSpec& flare,
+                        Warnings& warnings) const;
   // When the samples are taken (RenderSettings::timing): for a scene that
-  // moves during the span it was loaded for, from the options' shutter;
-  // none when nothing moves (a notice then when a rolling shutter or a
-  // shutter curve was asked for).
-  std::optional<ShutterTiming> shutterTiming(const CameraOptions& options, Warnings& warnings) const;
+  // moves during the span it was loaded for, from the shutter; none when
+  // nothing moves (a notice then when a rolling shutter or a shutter curve
+  // was asked for).
+  std::optional<ShutterTiming> shutterTiming(const ShutterSpec& shutter, Warnings& warnings) const;
   // The colour of the scene's most powerful light (--white-balance auto).
   std::optional<Rgb> dominantLightColour() const { return lights_->dominantColour(); }
 
   // Renders with a progress bar on stderr unless `quiet`.
   RenderJobResult render(const Camera& camera, const RenderSettings& settings, bool quiet) const;
 
-  // --flare on with the full lens: the light pass (render/flare_light_pass.h)
+  // The full lens's stray light: the light pass (render/flare_light_pass.h)
   // of the scene's punctual lights, still emitters and environment sun (and,
   // with a maximum depth of 1 or more, the lamps' lit surfaces) for these
-  // settings; none otherwise. spp x pixels / 10 paths (at least 65 536) for
+  // settings. spp x pixels / 10 paths (at least 65 536) for
   // each light, the emitters together and the sun (an eighth of that for a
   // lamp's lit surfaces), from the render's seed. Camera paths of
   // a flare camera skip these sources after a lens reflection, so every
   // render of one adds this image.
-  std::shared_ptr<const FlareImage> flareLight(const Camera& camera, const RenderSettings& settings) const;
+  std::shared_ptr<const FlareImage> flareLight(const LensCamera& camera,
+                                               const RenderSettings& settings) const;
 
   // Continues `state` to settings.samplesPerPixel in passes steered by
   // `control` (see renderPasses); `finished` says whether it got there.
@@ -101,9 +110,12 @@ class RenderJob {
   // "default " when the scene had no light and no --env (lensrt:environment).
   std::string environmentDescription() const;
 
-  // The EXR header of a render: camera, settings, timing, efficiency.
-  ImageMetadata metadata(const Camera& camera, const RenderSettings& settings, const RenderJobResult& result,
-                         const std::string& commandLine) const;
+  // The EXR header of a render: camera (with its exposure), settings,
+  // timing, efficiency; `identity` is the render's (identity(), and what
+  // the plan adds to it).
+  ImageMetadata metadata(const Camera& camera, const Exposure& exposure, const RenderSettings& settings,
+                         const RenderJobResult& result, const std::string& commandLine,
+                         const ImageMetadata& identity) const;
 
  private:
   std::shared_ptr<const Scene> scene_;

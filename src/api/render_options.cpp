@@ -36,6 +36,9 @@ constexpr int kMaxDimension = 65536;
 
 }  // namespace
 
+namespace {
+
+// "" when `text` is a valid --res value, else why not.
 std::string checkResolution(const std::string& text) {
   const std::size_t x = text.find_first_of("xX");
   const std::optional<int> w = parseInt(text.substr(0, x));
@@ -47,19 +50,12 @@ std::string checkResolution(const std::string& text) {
   return "";
 }
 
+}  // namespace
+
 Resolution parseResolution(const std::string& text) {
   if (const std::string why = checkResolution(text); !why.empty()) throw UsageError("--res", why);
   const std::size_t x = text.find_first_of("xX");
   return {*parseInt(text.substr(0, x)), x == std::string::npos ? 0 : *parseInt(text.substr(x + 1))};
-}
-
-std::string checkEnvironment(const std::string& text) {
-  try {
-    parseEnvironment(text);
-    return "";
-  } catch (const UsageError& e) {
-    return e.message();
-  }
 }
 
 EnvironmentSpec parseEnvironment(const std::string& text) {
@@ -99,14 +95,6 @@ EnvironmentSpec parseEnvironment(const std::string& text) {
                      ".webp, .png, ...), got '" +
                          text + "'");
   spec.file = text;
-  return spec;
-}
-
-EnvironmentSpec environmentSpec(const EnvironmentArgs& args) {
-  EnvironmentSpec spec;
-  if (!args.environment.empty()) spec = parseEnvironment(args.environment);
-  spec.rotationDegrees = args.rotationDegrees;
-  spec.intensity = args.intensity;
   return spec;
 }
 

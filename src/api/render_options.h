@@ -1,6 +1,6 @@
-// Parsing of `lensrt render`'s option values that are more than a number:
-// --res, --env (with --env-rotate, --env-intensity) and --aov. Bad syntax
-// throws UsageError (exit 2); app/render_flags.h registers the flags.
+// Parsing of the render options that are more than a number: --res, --env
+// and --aov (the option table's rows call these). Bad syntax throws
+// UsageError (exit 2).
 #pragma once
 
 #include <cstdint>
@@ -34,14 +34,6 @@ struct EnvironmentSpec {
 };
 EnvironmentSpec parseEnvironment(const std::string& text);
 
-// The three environment flags of `lensrt render` and `lensrt compare`.
-struct EnvironmentArgs {
-  std::string environment;  // --env; empty: the default
-  double rotationDegrees = 0;
-  double intensity = 1;
-};
-EnvironmentSpec environmentSpec(const EnvironmentArgs& args);
-
 // What the scene's content may make lensrt read and hold (`lensrt render` and
 // `lensrt compare`): --allow-external-files (or LENSRT_ALLOW_EXTERNAL_FILES=1)
 // and --max-texture-memory MIB.
@@ -58,9 +50,5 @@ AovSelection parseAovs(const std::vector<std::string>& names);
 // UsageError for a threshold <= 0 or not finite, a --min-spp without a
 // threshold, or one below 1 or above --spp.
 std::optional<AdaptiveSampling> adaptiveSampling(double noiseThreshold, std::optional<int> minSpp, int spp);
-
-// "" when `text` is a valid --res / --env value, else why not (for CLI11 checks).
-std::string checkResolution(const std::string& text);
-std::string checkEnvironment(const std::string& text);
 
 }  // namespace lensrt

@@ -8,9 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "api/camera_options.h"
-#include "api/raw_output.h"
-#include "api/render_job.h"
+#include "api/render_plan.h"
+#include "api/render_spec.h"
 #include "api/scene.h"
 #include "core/warnings.h"
 #include "image/image.h"
@@ -19,12 +18,10 @@
 namespace lensrt {
 
 struct RenderRequest {
-  FrameOptions frame;       // camera node and pose, resolution, environment, max depth
-  CameraOptions camera;     // the model and its optics
-  RenderSettings settings;  // spp, seed, threads, AOVs, region
-  RawOutputOptions raw;     // --raw OUT.dng and --cfa: written when the render finishes
+  RenderSpec spec;  // the scene's frame, camera, sampling, outputs (its scene file and time: the Scene's)
   // lensrt:command_line in the metadata: how the render was asked for.
   std::string commandLine;
+  ScenePoser repose;  // poses the scene over another span; none: reads the file again
 };
 
 // Called on the calling thread between passes (which double in length from
@@ -47,7 +44,7 @@ struct RenderResult {
 // usage error ("--res"), not a crash mid-render.
 void checkImageFitsInMemory(int width, int height, std::size_t channels);
 
-// Sets up the frame and the camera (warnings go to `warnings`), then renders.
+// Plans the render (api/render_plan.h; warnings go to `warnings`), then renders.
 // Throws UsageError for bad options, InputError for bad files.
 RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderRequest& request,
                     Warnings& warnings, const RenderProgress& progress = {});

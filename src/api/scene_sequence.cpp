@@ -24,9 +24,14 @@ SceneSequence::SceneSequence(const SceneLoadOptions& options, Warnings& warnings
 SceneSequence::~SceneSequence() = default;
 
 std::shared_ptr<const Scene> SceneSequence::at(double seconds) {
+  return at(seconds, options_.time.spanSeconds);
+}
+
+std::shared_ptr<const Scene> SceneSequence::at(double seconds, double spanSeconds) {
   const auto started = std::chrono::steady_clock::now();
   SceneLoadOptions options = options_;
   options.time.seconds = seconds;
+  options.time.spanSeconds = spanSeconds;
   // The last frame's materials and textures: taken when nothing else holds
   // it any more, else copied (still cheaper than decoding the textures).
   std::optional<SceneDesc> previous;

@@ -29,6 +29,9 @@ class SceneSequence {
   // textures and file digests over (a copy of them while something else
   // still holds it). Not thread-safe: one call at a time.
   std::shared_ptr<const Scene> at(double seconds);
+  // The same, recorded over `spanSeconds` instead of the options' span (a
+  // render with another shutter).
+  std::shared_ptr<const Scene> at(double seconds, double spanSeconds);
 
  private:
   SceneLoadOptions options_;

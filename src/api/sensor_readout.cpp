@@ -19,19 +19,19 @@ std::string SensorReadout::describe() const {
          (camera ? ", read in the camera's RGB" : "");
 }
 
-std::optional<SensorReadout> sensorReadout(const CameraOptions& o, const FilmGeometry& film,
+std::optional<SensorReadout> sensorReadout(const SensorSpec& o, const Exposure& exposure,
+                                           const FilmGeometry& film,
                                            const std::optional<CameraRgb>& cameraRgb) {
-  // checkCameraOptions (run by makeCamera, before this) refused --sensor-params without --noise on.
-  if (o.noise == "off") return std::nullopt;
+  if (!o.noise) return std::nullopt;
   SensorReadout r;
   r.camera = cameraRgb;
-  r.params = sensorParams(o.sensorParams.empty() ? "default" : o.sensorParams);
-  const double shutter = shutterSeconds(o);
-  r.physical = o.exposure == "physical";
+  r.params = sensorParams(o.params.empty() ? "default" : o.params);
+  const double shutter = exposure.shutterSeconds;
+  r.physical = exposure.mode == ExposureMode::Physical;
   if (r.physical) {
     const double pitchX = film.sensorWidthMm / film.width * 1e-3,
                  pitchY = film.sensorHeightMm / film.height * 1e-3;
-    r.exposure = physicalSensorExposure(r.params, o.iso.value_or(100.0), shutter, pitchX * pitchY);
+    r.exposure = physicalSensorExposure(r.params, exposure.iso, shutter, pitchX * pitchY);
   } else {
     r.exposure = normalizedSensorExposure(r.params, shutter);
   }
@@ -72,7 +72,6 @@ void readOut(const SensorReadout& r, Image& image, ImageMetadata& metadata, std:
         (r.physical ? r.camera->relativeElectrons : Vec3d{1, 1, 1}) * r.exposure.electronsPerValue;
     metadata["lensrt:sensor_channel_electrons"] = fmt::format("{:.9g} {:.9g} {:.9g}", e.x, e.y, e.z);
   }
-  addSensorIdentity(metadata, r);
   metadata["lensrt:sensor_noise"] = r.describe();
   metadata["lensrt:sensor_electrons_per_value"] = fmt::format("{:.9g}", r.exposure.electronsPerValue);
   metadata["lensrt:sensor_dn_per_electron"] =

@@ -5,8 +5,9 @@
 #include <optional>
 #include <string>
 
-#include "api/camera_options.h"
+#include "api/sensor_spec.h"
 #include "camera/camera.h"
+#include "camera/exposure.h"
 #include "image/image.h"
 #include "sensor/camera_rgb.h"
 #include "sensor/readout.h"
@@ -25,10 +26,11 @@ struct SensorReadout {
   std::string describe() const;
 };
 
-// None with --noise off (options checked by checkCameraOptions). Physical exposure gives electrons from the
-// lux seconds on a pixel of the film's pitch; normalized exposure fills the well at an image value of 1.0.
-// Throws UsageError / InputError for bad settings.
-std::optional<SensorReadout> sensorReadout(const CameraOptions& options, const FilmGeometry& film,
+// None with --noise off. Physical exposure gives electrons from the lux
+// seconds on a pixel of the film's pitch; normalized exposure fills the well
+// at an image value of 1.0. Throws UsageError / InputError for bad settings.
+std::optional<SensorReadout> sensorReadout(const SensorSpec& sensor, const Exposure& exposure,
+                                           const FilmGeometry& film,
                                            const std::optional<CameraRgb>& cameraRgb);
 
 // Appends " sensor_noise=NAME" to lensrt:settings (an identity key: a noisy
@@ -36,8 +38,9 @@ std::optional<SensorReadout> sensorReadout(const CameraOptions& options, const F
 void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadout>& readout);
 
 // The readout applied to a render's image, with its metadata
-// (lensrt:sensor_noise, lensrt:sensor_electrons_per_value, lensrt:sensor_dn_per_electron,
-// and with a camera's RGB lensrt:sensor_channel_electrons). With a camera's
+// (lensrt:sensor_noise, lensrt:sensor_electrons_per_value,
+// lensrt:sensor_dn_per_electron, and with a camera's RGB
+// lensrt:sensor_channel_electrons; the identity's part is addSensorIdentity's). With a camera's
 // RGB, each channel is read in camera RGB and the reading turned back into
 // the image's RGB; noiseless.R/G/B keep the render.
 void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed);

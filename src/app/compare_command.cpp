@@ -15,14 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "api/camera_options.h"
-#include "api/film_colour.h"
-#include "api/render_job.h"
-#include "api/render_options.h"
+#include "api/camera_models.h"
+#include "api/option_table.h"
+#include "api/render_plan.h"
 #include "api/text_file.h"
-#include "app/camera_flags.h"
 #include "app/command.h"
-#include "app/render_flags.h"
+#include "app/option_flags.h"
 #include "cluster/cluster.h"
 #include "cluster/distributed_render.h"
 #include "cluster/job_on_ranks.h"
@@ -38,18 +36,11 @@
 namespace lensrt {
 namespace {
 
-constexpr std::array<const char*, 4> kModels = {"pinhole", "thin", "thick", "lens"};
-
 struct CompareArgs {
-  SceneArgs frame;  // the scene file and its frame
+  RenderSpec spec;  // the option table's flags fill it
   std::string outputDir;
-  int spp = 16;
-  AdaptiveArgs adaptive;
-  int threads = 0;
-  std::uint64_t seed = 0;
-  int tileSize = 16;
   bool quiet = false;
-  CameraOptions camera;
+  std::shared_ptr<OptionFlags> flags;
 };
 
 nlohmann::json numberOrNull(double v) {
@@ -71,7 +62,7 @@ std::filesystem::path prepareOutputDir(const std::string& text, bool quiet) {
   return dir;
 }
 
-nlohmann::json lensFigures(const CameraOptions& options) {
+nlohmann::json lensFigures(const CameraSpec& options) {
   LensPrescription lens = loadLens(findLens(options.lens, options.lensDir));
   if (options.focalLengthMm) lens = lens.scaled(*options.focalLengthMm / computeParaxial(lens).efl);
   const ParaxialData p = computeParaxial(lens);
@@ -122,58 +113,58 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   const bool leader = cluster.isMain();
   CompareArgs args = givenArgs;
   if (!leader) args.quiet = true;
+  const RenderSpec& spec = args.spec;
+  if (leader) args.flags->warnUnused(spec, args.quiet);
   // 1. Everything that can fail before rendering.
-  // The models are compared on the noiseless film; lensrt render reads one out.
-  if (args.camera.noise != "off" || !args.camera.sensorParams.empty())
-    throw UsageError(args.camera.noise != "off" ? "--noise" : "--sensor-params",
-                     "lensrt compare compares the models' noiseless images; lensrt render --noise on reads "
-                     "one out through a sensor");
-  SceneOptions sceneOptions = lensrt::sceneOptions(args.frame, args.quiet);
-  sceneOptions.time.spanSeconds = recordedSpanSeconds(args.camera);
-  RenderSettings settings;
-  settings.samplesPerPixel = args.spp;
-  settings.adaptive = adaptiveSampling(args.adaptive, args.spp);
-  settings.aovs.spp = settings.adaptive.has_value();
-  settings.seed = args.seed;
-  settings.threads = args.threads;
-  settings.tileSize = args.tileSize;
-  const std::string& envFile = sceneOptions.environment.file;
+  checkSpec(spec, kCompareCommand);
+  const std::string& envFile = spec.environment.file;
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile))
     throw InputError(envFile, "environment map not found");
   const std::filesystem::path dir =
       leader ? prepareOutputDir(args.outputDir, args.quiet) : std::filesystem::path();
 
   Warnings warnings([&](const std::string& message) {
-    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.frame.scene, message);
+    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", spec.scene.file, message);
   });
-  const RenderJob job(sceneOptions, warnings);
-  settings.filmResponse = filmColour(args.camera, job.dominantLightColour(), warnings).response;
-  settings.timing = job.shutterTiming(args.camera, warnings);
-  const nlohmann::json lens = lensFigures(args.camera);
+  const nlohmann::json lens = lensFigures(spec.camera);
   // An --fstop wider than the lens opens would leave the full lens at its
   // widest and the ideal models wider: all four use the widest instead.
-  CameraOptions matched = args.camera;
+  RenderSpec matched = spec;
+  matched.camera.model = CameraModel::Lens;
+  matched.camera.film.reset();  // --film is the pinhole's
   const double wideOpen = lens.at("f_number_wide_open").get<double>();
-  if (matched.fNumber && *matched.fNumber < wideOpen * (1 - 1e-9)) {
+  if (matched.camera.fNumber && *matched.camera.fNumber < wideOpen * (1 - 1e-9))
+    matched.camera.fNumber = wideOpen;
+  PlanOptions planOptions;
+  planOptions.quiet = args.quiet;
+  planOptions.command = kCompareCommand;
+  const RenderPlan plan(matched, warnings, planOptions);
+  if (spec.camera.fNumber && *spec.camera.fNumber < wideOpen * (1 - 1e-9))
     warnings.warn(
         fmt::format("{}: f/{:g} is wider than the lens allows; every model uses its widest aperture f/{:.3g}",
-                    args.camera.lens, *matched.fNumber, wideOpen));
-    matched.fNumber = wideOpen;
-  }
+                    spec.camera.lens, *spec.camera.fNumber, wideOpen));
+  const RenderJob& job = plan.job();
   // All four cameras first: a bad --focus fails before any render.
-  std::vector<std::unique_ptr<Camera>> cameras;
-  for (const char* model : kModels) {
-    CameraOptions options = matched;
-    options.model = model;
+  std::vector<PlannedShot> others;
+  std::vector<const PlannedShot*> shots;
+  others.reserve(cameraModels().size());
+  for (const CameraModelInfo& model : cameraModels()) {
+    if (model.model == CameraModel::Lens) {
+      shots.push_back(&plan.shot());
+      continue;
+    }
+    CameraSpec camera = matched.camera;
+    camera.model = model.model;
     // --film chooses the pinhole's film (radiance, the ideal reference, by
     // default); the lens models always record irradiance.
-    if (options.model != "pinhole") options.film.clear();
-    cameras.push_back(job.makeCamera(options, warnings));
+    if (model.model == CameraModel::Pinhole) camera.film = spec.camera.film;
+    shots.push_back(&others.emplace_back(plan.shotOf(camera, warnings)));
   }
+  std::vector<std::string> modelNames;
+  for (const CameraModelInfo& model : cameraModels()) modelNames.push_back(model.name);
   if (cluster.size() > 1) {
     // The full lens's identity covers the scene, the lens and the settings.
-    if (const auto failure =
-            setUpTogether(*context.cluster, args.frame.scene, job.identity(*cameras.back(), settings))) {
+    if (const auto failure = setUpTogether(*context.cluster, spec.scene.file, shots.back()->identity)) {
       if (leader)
         fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
                    failure->line);
@@ -183,32 +174,33 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
 
   // 2. Render and write each model's EXR.
   std::vector<RenderJobResult> results;
-  for (std::size_t i = 0; i < kModels.size(); ++i) {
+  for (std::size_t i = 0; i < modelNames.size(); ++i) {
     if (!args.quiet)
-      fmt::print(stderr, "lensrt: compare: {} ({}/{})\n", cameras[i]->describe(), i + 1, kModels.size());
-    results.push_back(renderOnRanks(job, *cameras[i], settings, args.quiet, cluster));
+      fmt::print(stderr, "lensrt: compare: {} ({}/{})\n", shots[i]->camera->describe(), i + 1,
+                 modelNames.size());
+    results.push_back(renderOnRanks(job, *shots[i]->camera, shots[i]->settings, args.quiet, cluster));
     if (!leader) continue;
-    writeImage(dir / (std::string(kModels[i]) + ".exr"), results.back().output.image,
-               job.metadata(*cameras[i], settings, results.back(), context.commandLine));
+    writeImage(dir / (std::string(modelNames[i]) + ".exr"), results.back().output.image,
+               plan.finish(results.back(), *shots[i], context.commandLine));
     if (results.back().output.droppedSamples > 0)
-      warnings.warn(fmt::format("{}: {} samples with NaN or infinite radiance were dropped", kModels[i],
+      warnings.warn(fmt::format("{}: {} samples with NaN or infinite radiance were dropped", modelNames[i],
                                 results.back().output.droppedSamples));
   }
   if (!leader) return 0;
-  const std::size_t lensIndex = kModels.size() - 1;
+  const std::size_t lensIndex = modelNames.size() - 1;
   const Image& lensImage = results[lensIndex].output.image;
 
   // 3. Contact sheet.
   std::vector<LabelledImage> cells;
-  for (std::size_t i = 0; i < kModels.size(); ++i) {
-    const CameraInfo info = cameras[i]->info();
+  for (std::size_t i = 0; i < modelNames.size(); ++i) {
+    const CameraInfo info = shots[i]->camera->info();
     const std::string focus = info.focusMetres <= 0 ? "no focus"
                               : std::isinf(info.focusMetres)
                                   ? "focus inf"
                                   : fmt::format("focus {:.3g} m", info.focusMetres);
     cells.push_back(
         {results[i].output.image,
-         {kModels[i],
+         {modelNames[i],
           fmt::format("f={:.4g}mm {} {}", info.focalLengthMm,
                       info.fNumber > 0 ? fmt::format("f/{:.3g}", info.fNumber) : "no aperture", focus),
           fmt::format("{} spp, {:.2f} s, rays {:.1f}%", sppLabel(results[i].output), results[i].seconds,
@@ -224,12 +216,12 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   heatmap.scaleMax = commonHeatmapScale(errors);
 
   nlohmann::json models = nlohmann::json::object();
-  for (std::size_t i = 0; i < kModels.size(); ++i) {
+  for (std::size_t i = 0; i < modelNames.size(); ++i) {
     const Image& image = results[i].output.image;
-    const CameraInfo info = cameras[i]->info();
+    const CameraInfo info = shots[i]->camera->info();
     nlohmann::json m = {
-        {"camera", cameras[i]->describe()},
-        {"file", std::string(kModels[i]) + ".exr"},
+        {"camera", shots[i]->camera->describe()},
+        {"file", std::string(modelNames[i]) + ".exr"},
         {"f_number", info.fNumber > 0 ? nlohmann::json(info.fNumber) : nlohmann::json(nullptr)},
         {"focus_m", info.focusMetres > 0 ? numberOrNull(info.focusMetres) : nlohmann::json(nullptr)},
         {"focus_at_infinity", std::isinf(info.focusMetres)},
@@ -254,39 +246,40 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     m["mean_abs_diff_vs_lens"] = numberOrNull(diff.overall.meanError);
     m["rmse_vs_lens"] = numberOrNull(diff.overall.rmse);
     if (i < lensIndex) {
-      heatmap.title = fmt::format("|{} - lens|", kModels[i]);
-      const std::string name = fmt::format("diff-{}-vs-lens.png", kModels[i]);
+      heatmap.title = fmt::format("|{} - lens|", modelNames[i]);
+      const std::string name = fmt::format("diff-{}-vs-lens.png", modelNames[i]);
       writeImage(dir / name, makeHeatmap(errors[i], image.width, image.height, heatmap), {});
       m["heatmap"] = name;
     }
-    models[kModels[i]] = m;
+    models[modelNames[i]] = m;
   }
 
-  const CameraInfo lensInfo = cameras[lensIndex]->info();
+  const CameraInfo lensInfo = shots[lensIndex]->camera->info();
   nlohmann::json report = {
       {"version", LENSRT_VERSION},
       {"command_line", context.commandLine},
-      {"model_order", kModels},
+      {"model_order", modelNames},
       {"settings",
-       {{"scene", args.frame.scene},
-        {"lens", args.camera.lens},
+       {{"scene", spec.scene.file},
+        {"lens", spec.camera.lens},
         {"f_number", lensInfo.fNumber},
-        {"focus", args.camera.focus},
+        {"focus", findOption("--focus")->show(spec)},
         {"focus_m", numberOrNull(lensInfo.focusMetres)},
-        {"sensor", args.camera.sensor},
+        {"sensor", findOption("--sensor")->show(spec)},
         {"exposure", lensInfo.exposure},
-        {"pinhole_film", cameras[0]->info().film},
-        {"blades", args.camera.blades},
+        {"pinhole_film", shots[0]->camera->info().film},
+        {"blades", spec.camera.blades},
         {"width", job.width()},
         {"height", job.height()},
-        {"spp", args.spp},
-        {"noise_threshold",
-         settings.adaptive ? nlohmann::json(settings.adaptive->noiseThreshold) : nlohmann::json(nullptr)},
-        {"min_spp",
-         settings.adaptive ? nlohmann::json(settings.adaptive->minSamples) : nlohmann::json(nullptr)},
-        {"seed", args.seed},
-        {"max_depth", args.frame.maxDepth},
-        {"light_sampler", args.frame.lightSampler},
+        {"spp", spec.sampling.spp},
+        {"noise_threshold", plan.settings().adaptive
+                                ? nlohmann::json(plan.settings().adaptive->noiseThreshold)
+                                : nlohmann::json(nullptr)},
+        {"min_spp", plan.settings().adaptive ? nlohmann::json(plan.settings().adaptive->minSamples)
+                                             : nlohmann::json(nullptr)},
+        {"seed", spec.sampling.seed},
+        {"max_depth", spec.sampling.maxDepth},
+        {"light_sampler", lightSamplingName(spec.sampling.lightSampling)},
         {"environment", job.environmentDescription()}}},
       {"lens", lens},
       {"heatmap_scale", heatmap.scaleMax},
@@ -311,43 +304,13 @@ CommandAction addCompareCommand(CLI::App& app, const CommandContext& context) {
       "Example: lensrt compare scenes/dof_row.gltf --lens dgauss-50mm --fstop 2 --focus 2 --spp 64 "
       "--res 640x360 -o out/cmp");
   auto args = std::make_shared<CompareArgs>();
-  cmd->add_option("scene", args->frame.scene, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
+  cmd->add_option("scene", args->spec.scene.file, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
       ->required();
   cmd->add_option("-o,--output", args->outputDir,
                   "output directory, created (with its missing parents) if missing, e.g. -o out/cmp")
       ->required();
-  cmd->add_option("--spp", args->spp,
-                  "samples per pixel for every model (>= 1; with --noise-threshold, the most), e.g. --spp 64")
-      ->check(CLI::Range(1, 1 << 24))
-      ->capture_default_str();
-  addAdaptiveOptions(*cmd, args->adaptive);
-  cmd->add_option("--res", args->frame.resolution,
-                  "image size in pixels WIDTHxHEIGHT, e.g. --res 640x360 (default 640 wide, height from the "
-                  "glTF camera's aspect ratio or 360)")
-      ->check([](const std::string& s) { return checkResolution(s); });
-  cmd->add_option("--max-depth", args->frame.maxDepth,
-                  "maximum scattering events per path, e.g. --max-depth 8")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "worker threads (0: all cores), e.g. --threads 4")
-      ->check(CLI::Range(0, 4096))
-      ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "random seed, the same for every model, e.g. --seed 7")
-      ->capture_default_str();
-  cmd->add_option("--camera-node", args->frame.cameraNode, "camera to render: a glTF node name or index");
-  cmd->add_option("--scene-index", args->frame.sceneIndex, "which glTF scene to render (0-based)")
-      ->check(CLI::Range(-1, 1 << 20));
-  addLightSamplerOption(*cmd, args->frame);
-  addEnvironmentOptions(*cmd, args->frame.environment);
-  addSceneAccessOptions(*cmd, args->frame.access);
-  addAnimationOptions(*cmd, args->frame);
-  cmd->add_option("--tile-size", args->tileSize,
-                  "tile size in pixels for scheduling (does not change the images)")
-      ->check(CLI::Range(1, 4096))
-      ->capture_default_str();
-  addCameraOptions(*cmd, args->camera);
+  args->flags = std::make_shared<OptionFlags>(*cmd, args->spec, kCompareCommand);
   // compare renders every model; the lens they are derived from is required.
-  cmd->remove_option(cmd->get_option("--camera"));
   cmd->get_option("--lens")->required();
   cmd->get_option("--film")->description(
       "the pinhole's film: radiance (the ideal reference, as pbrt, Cycles and Mitsuba record it; default) or "

@@ -25,7 +25,7 @@ RenderJobResult renderOnRanks(const RenderJob& job, const Camera& camera, const 
     renderAcrossRanks(cluster, camera, job.integrator(), settings, state, PassControl{}, &progress, signal);
   }
   RenderJobResult result;
-  result.output = renderOutput(camera, state, job.flareLight(camera, settings).get());
+  result.output = renderOutput(camera, state, settings.flareLight.get());
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

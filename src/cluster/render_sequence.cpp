@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 
+#include "api/render_plan.h"
 #include "api/scene_sequence.h"
 
 namespace lensrt {
@@ -14,10 +15,11 @@ int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& fram
   const bool quiet = job.quiet || !leader;
   // The file's warnings, each once for the whole sequence.
   Warnings warnings([&](const std::string& message) {
-    if (!quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", job.scene.scene, message);
+    if (!quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", job.spec.scene.file, message);
   });
-  SceneSequence sequence(
-      SceneLoadOptions{job.scene.scene, job.scene.sceneIndex, job.scene.limits, job.scene.time}, warnings);
+  const SceneOptions options = sceneOptions(job.spec, quiet);
+  SceneSequence sequence(SceneLoadOptions{options.scene, options.sceneIndex, options.limits, options.time},
+                         warnings);
   if (cluster.size() > 1) {
     // Every rank has read the file: go on together, or stop together with the first error.
     if (const auto failure = cluster.agree(std::nullopt)) {
@@ -33,7 +35,8 @@ int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& fram
   for (std::size_t i = rank; i < frames.size(); i += ranks) {
     FileRender frame = job;
     frame.quiet = quiet;
-    frame.scene.time.seconds = frames[i].seconds;
+    frame.spec.time.seconds = frames[i].seconds;
+    frame.spec.time.frame.reset();
     frame.output = frames[i].output;
     frame.loaded = sequence.at(frames[i].seconds);
     if (const int status = renderToFile(frame, alone); status != 0) return status;

@@ -11,10 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "api/film_colour.h"
+#include "api/option_table.h"
 #include "api/output_file.h"
-#include "api/render_request.h"
-#include "api/sensor_readout.h"
+#include "api/render_plan.h"
 #include "cluster/checkpoint.h"
 #include "cluster/distributed_render.h"
 #include "cluster/interrupt.h"
@@ -24,30 +23,6 @@
 #include "render/progress.h"
 
 namespace lensrt {
-namespace {
-
-// --crop or --tile: the part of the frame to render.
-PixelRegion partOfFrame(const FileRender& job, int width, int height) {
-  const PixelRegion frame = PixelRegion::wholeFrame(width, height);
-  if (job.tile) {
-    if (job.tile->count > height)
-      throw UsageError("--tile",
-                       fmt::format("{} tiles is more than the image's {} rows", job.tile->count, height));
-    return frameStrip(job.tile->index, job.tile->count, width, height);
-  }
-  if (job.crop) {
-    const PixelRegion& crop = *job.crop;
-    if (!frame.contains(crop))
-      throw UsageError("--crop",
-                       fmt::format("{},{},{},{} is not inside the {}x{} image (X1 and Y1 at most {} and {})",
-                                   crop.x0, crop.x1, crop.y0, crop.y1, width, height, width, height));
-    return crop;
-  }
-  return frame;
-}
-
-}  // namespace
-
 int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   // Under MPI, rank 0 alone reads and writes the output and speaks; the
   // other ranks load the scene, make the camera and render what it sends.
@@ -55,26 +30,24 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   FileRender args = givenJob;
   if (!leader) args.quiet = true;
   // 1. Options.
-  SceneOptions& sceneOptions = args.scene;
-  sceneOptions.quiet = args.quiet;
-  RenderSettings& settings = args.settings;
+  const RenderSpec& spec = args.spec;
   // Everything that can be checked without rendering is checked first, so
   // that a long render never ends in an error.
   std::error_code ec;
   if (leader) noteCreatedFolder(checkOutputFile(args.output), args.quiet);
-  if (leader) checkRawOutput(args.raw);
+  if (leader) checkRawOutput(spec.raw);
   if (leader && args.display) checkDisplayTransform(args.output, *args.display);
   const bool exr = std::filesystem::path(args.output).extension() == ".exr";
   // A preview's 8 bits mean sRGB; other spaces' numbers would show wrong colours.
-  if (!exr && args.camera.outputSpace != "srgb")
-    throw UsageError("--output-space", args.camera.outputSpace + " needs an .exr output (" + args.output +
-                                           " is a preview, whose colours are sRGB)");
+  if (!exr && spec.colour.outputSpace != ColorSpaceId::Srgb)
+    throw UsageError("--output-space", findOption("--output-space")->show(spec) + " needs an .exr output (" +
+                                           args.output + " is a preview, whose colours are sRGB)");
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw UsageError("--checkpoint/--resume",
                      "need an .exr output (-o OUT.exr), the image that is continued");
   if (leader && !args.resume.empty() && !std::filesystem::exists(args.resume, ec))
     throw InputError(args.resume, "no such checkpoint");
-  const std::string& envFile = sceneOptions.environment.file;
+  const std::string& envFile = spec.environment.file;
   if (!envFile.empty() && !std::filesystem::exists(envFile, ec))
     throw InputError(envFile, "environment map not found");
   if (!envFile.empty() && !std::filesystem::is_regular_file(envFile, ec))
@@ -86,7 +59,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   std::vector<std::string> held;
   bool holding = true;
   const auto print = [&](const std::string& message) {
-    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", args.scene.scene, message);
+    if (!args.quiet) fmt::print(stderr, "lensrt: warning: {}: {}\n", spec.scene.file, message);
   };
   Warnings warnings([&](const std::string& message) {
     if (holding)
@@ -96,18 +69,17 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   });
 
   // 2. Scene, lights, camera, render.
-  const RenderJob job =
-      args.loaded ? RenderJob(args.loaded, sceneOptions, warnings) : RenderJob(sceneOptions, warnings);
-  checkImageFitsInMemory(job.width(), job.height(), filmChannels(settings.aovs).size());
-  const PixelRegion region = partOfFrame(args, job.width(), job.height());
-  settings.region = region;
-  const std::unique_ptr<Camera> camera = job.makeCamera(args.camera, warnings);
-  settings.timing = job.shutterTiming(args.camera, warnings);
-  const FilmColour colour = filmColour(args.camera, job.dominantLightColour(), warnings);
-  const std::optional<SensorReadout> readout = sensorReadout(args.camera, camera->film(), colour.camera);
-  settings.filmResponse = colour.response;
-  ImageMetadata identity = job.identity(*camera, settings);
-  addSensorIdentity(identity, readout);
+  PlanOptions planOptions;
+  planOptions.scene = args.loaded;
+  planOptions.quiet = args.quiet;
+  // The flare light pass, once, for every image this process writes.
+  planOptions.lightPass = leader;
+  const RenderPlan plan(spec, warnings, planOptions);
+  const RenderJob& job = plan.job();
+  const Camera& camera = plan.camera();
+  const RenderSettings& settings = plan.settings();
+  const PixelRegion region = *settings.region;
+  const ImageMetadata& identity = plan.identity();
   // The running sums live on rank 0 alone: the other ranks get strips.
   std::optional<FilmState> leaderState;
   if (leader) {
@@ -123,7 +95,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   for (const std::string& message : held) print(message);
   if (shared) {
     // Every rank is set up: go on together, or stop together with the first error.
-    if (const auto failure = setUpTogether(cluster, args.scene.scene, identity)) {
+    if (const auto failure = setUpTogether(cluster, spec.scene.file, identity)) {
       if (leader)
         fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
                    failure->line);
@@ -132,12 +104,10 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   }
   if (!leader) {
     const InterruptHandler interrupt;
-    workForMain(cluster, *camera, job.integrator(), settings, [&] { return interrupt.signal(); });
+    workForMain(cluster, camera, job.integrator(), settings, [&] { return interrupt.signal(); });
     return interrupt.signal() ? interrupt.exitStatus() : 0;
   }
   FilmState& state = *leaderState;
-  // The flare light pass, once, for every image this process writes.
-  settings.flareLight = job.flareLight(*camera, settings);
 
   // Passes, checkpoints and signals (the handlers only while rendering).
   const InterruptHandler interrupt;
@@ -146,9 +116,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   GatherCost gather;  // under MPI, once the render is done
   // The metadata of an image to write; with --noise on, the sensor reads it out first.
   const auto metadataOf = [&](RenderJobResult& r) {
-    ImageMetadata m = job.metadata(*camera, settings, r, args.commandLine);
-    if (readout) readOut(*readout, r.output.image, m, settings.seed);
-    m["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
+    ImageMetadata m = plan.finish(r, plan.shot(), args.commandLine);
     if (shared) m["lensrt:mpi_ranks"] = std::to_string(cluster.size());
     if (gather.bytes > 0) {
       m["lensrt:gather_seconds"] = fmt::format("{:.3f}", gather.seconds);
@@ -163,7 +131,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - lastCheckpoint).count() < args.checkpointSeconds) return;
       RenderJobResult partial;
-      partial.output = renderOutput(*camera, s, settings.flareLight.get());
+      partial.output = renderOutput(camera, s, settings.flareLight.get());
       partial.seconds = std::chrono::duration<double>(now - started).count();
       const ImageMetadata metadata = metadataOf(partial);
       writeCheckpoint(args.output, s, partial.output.image, metadata);
@@ -177,13 +145,13 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
       const int remaining = std::max(0, settings.samplesPerPixel - state.samplesDone());
       Progress progress(region.pixelCount() * std::uint64_t(remaining),
                         Progress::styleFor(stderr, args.quiet));
-      finished = renderAcrossRanks(cluster, *camera, job.integrator(), settings, state, control, &progress,
+      finished = renderAcrossRanks(cluster, camera, job.integrator(), settings, state, control, &progress,
                                    rankSignal, &gather);
     }
-    result.output = renderOutput(*camera, state, settings.flareLight.get());
+    result.output = renderOutput(camera, state, settings.flareLight.get());
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   } else {
-    result = job.renderPasses(*camera, settings, state, control, args.quiet, finished);
+    result = job.renderPasses(camera, settings, state, control, args.quiet, finished);
   }
 
   // 3. Write: with the running sums when it can be continued.
@@ -201,12 +169,11 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
       writeCheckpoint(args.output, state, result.output.image, metadata, options);
     else
       writeOutputImage(args.output, result.output.image, metadata, options);
-    if (!args.raw.file.empty() && finished)
-      writeRawOutput(args.raw, result.output.image, readout, *camera, args.camera, colour.camera);
+    if (finished) plan.writeRaw(result.output.image);
   }
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
-               args.scene.scene, result.output.droppedSamples);
+               spec.scene.file, result.output.droppedSamples);
   if (!finished) {
     if (!args.quiet)
       fmt::print(stderr, "lensrt: interrupted: wrote {} with {} of {} spp (continue with --resume {})\n",
@@ -217,7 +184,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
     fmt::print(stderr, "lensrt: wrote {} ({}x{}, {} spp, {:.2f} s, {})\n", args.output,
                result.output.image.width, result.output.image.height,
                adaptiveSppSummary(result.output.image).value_or(std::to_string(settings.samplesPerPixel)),
-               result.seconds, camera->describe());
+               result.seconds, camera.describe());
   return 0;
 }
 

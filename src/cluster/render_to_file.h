@@ -9,9 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "api/camera_options.h"
-#include "api/raw_output.h"
 #include "api/render_job.h"
+#include "api/render_spec.h"
 #include "cluster/cluster.h"
 #include "image/preview_values.h"
 #include "render/pixel_region.h"
@@ -20,22 +19,13 @@
 namespace lensrt {
 
 struct FileRender {
-  SceneOptions scene;  // the scene file and the frame
-  // The scene already loaded and posed at scene.time (a frame of --frames);
-  // none: render loads scene.scene.
+  RenderSpec spec;  // the scene, camera, sampling and outputs (--crop, --tile and --raw among them)
+  // The scene already loaded and posed at the spec's time (a frame of
+  // --frames); none: the render loads spec.scene.
   std::shared_ptr<const Scene> loaded;
-  CameraOptions camera;     // the model and its optics, and the sensor
-  RenderSettings settings;  // spp, seed, threads, tile size, AOVs; the region comes from tile/crop
-  std::string output;       // -o: .exr (continuable) or a preview (.png, .jpg, .tif, ...), .dpx
+  std::string output;  // -o: .exr (continuable) or a preview (.png, .jpg, .tif, ...), .dpx
   // --ocio-display/--ocio-view: the previews' OpenColorIO display transform.
   std::optional<DisplayTransform> display;
-  RawOutputOptions raw;  // --raw and --cfa
-  // --tile I/N (strips top to bottom) or --crop X0,X1,Y0,Y1: the part of the frame.
-  struct Strip {
-    int index = 0, count = 1;
-  };
-  std::optional<Strip> tile;
-  std::optional<PixelRegion> crop;
   double checkpointSeconds = 0;  // 0: no checkpoints
   std::string resume;            // a checkpoint to continue; empty: a new render
   bool quiet = false;            // no progress, warnings or summary on stderr

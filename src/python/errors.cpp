@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "api/option_table.h"
 #include "core/error.h"
 
 namespace lensrt::python {
@@ -19,7 +20,8 @@ void registerErrors(pybind11::module_&) {
                             e.message().find("not found") != std::string::npos);
       PyErr_SetString(missing ? PyExc_FileNotFoundError : PyExc_ValueError, e.what());
     } catch (const UsageError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      // The command line's words turned into Python's: each --flag becomes its keyword.
+      PyErr_SetString(PyExc_ValueError, inKeywords(e.what()).c_str());
     }
   });
 }

@@ -27,6 +27,7 @@
 #include "core/transform.h"
 #include "python/arguments.h"
 #include "python/bindings.h"
+#include "python/keywords.h"
 #include "python/render_result.h"
 #include "python/warning_list.h"
 
@@ -58,52 +59,6 @@ Transform toPose(py::handle value) {
         "translation in metres, last row 0 0 0 1); the camera looks down its -Z axis with +Y up (glTF's "
         "convention; for an OpenCV pose negate its Y and Z columns)");
   return Transform(matrix);
-}
-
-std::optional<Resolution> toResolution(py::handle value) {
-  if (value.is_none()) return std::nullopt;
-  if (py::isinstance<py::str>(value)) return parseResolution(value.cast<std::string>());
-  if (py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value))
-    return Resolution{int(toInteger(value, "res", 1, 1 << 16)), 0};
-  if (py::isinstance<py::sequence>(value) && py::len(value) == 2) {
-    const py::sequence s = py::reinterpret_borrow<py::sequence>(value);
-    return Resolution{int(toInteger(s[0], "res", 1, 1 << 16)), int(toInteger(s[1], "res", 1, 1 << 16))};
-  }
-  badArgument("res", "(width, height) in pixels, a width, or 'WxH'", value);
-}
-
-std::string toEnvironment(py::handle value) {
-  if (value.is_none()) return "";
-  if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))
-    return fmt::format("constant:{:.9g}", toDouble(value, "env"));
-  return toPathText(value, "env");
-}
-
-std::string toFocusPixel(py::handle value) {
-  if (value.is_none()) return "";
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  if (py::isinstance<py::sequence>(value) && py::len(value) == 2) {
-    const py::sequence s = py::reinterpret_borrow<py::sequence>(value);
-    return fmt::format("{:.17g},{:.17g}", toDouble(s[0], "focus_pixel"), toDouble(s[1], "focus_pixel"));
-  }
-  badArgument("focus_pixel", "(x, y) in pixels", value);
-}
-
-std::string toShutter(py::handle value) {
-  if (value.is_none()) return "";
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  return fmt::format("{:.17g}", toDouble(value, "shutter"));
-}
-
-std::optional<PixelRegion> toCrop(py::handle value) {
-  if (value.is_none()) return std::nullopt;
-  if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) || py::len(value) != 4)
-    badArgument("crop", "(x0, x1, y0, y1) in pixels, x1 and y1 exclusive", value);
-  const py::sequence s = py::reinterpret_borrow<py::sequence>(value);
-  const PixelRegion r{int(toInteger(s[0], "crop", 0, 1 << 16)), int(toInteger(s[1], "crop", 1, 1 << 16)),
-                      int(toInteger(s[2], "crop", 0, 1 << 16)), int(toInteger(s[3], "crop", 1, 1 << 16))};
-  if (r.x1 <= r.x0 || r.y1 <= r.y0) badArgument("crop", "x0 < x1 and y0 < y1", value);
-  return r;
 }
 
 // An H x W (x channels) float32 view of channels [first, first + count) of the
@@ -148,7 +103,7 @@ class PyScene {
     if (!animation.is_none()) options.time.animation = py::str(animation);
     // Posed over the default shutter, as lensrt render does; render() poses
     // it again for another shutter or a rolling shutter.
-    options.time.spanSeconds = recordedSpanSeconds(CameraOptions{});
+    options.time.spanSeconds = ShutterSpec{}.spanSeconds();
     WarningList warnings(options.file);
     {
       const py::gil_scoped_release release;
@@ -190,166 +145,46 @@ class PyScene {
   }
 
   std::unique_ptr<PyRenderResult> render(const py::kwargs& given) const {
-    // Every keyword, with the command line's defaults (`lensrt render --help`).
-    static const std::vector<std::string> known = {"camera",
-                                                   "lens",
-                                                   "fstop",
-                                                   "focus",
-                                                   "focus_pixel",
-                                                   "sensor",
-                                                   "res",
-                                                   "spp",
-                                                   "min_spp",
-                                                   "noise_threshold",
-                                                   "seed",
-                                                   "aov",
-                                                   "env",
-                                                   "env_rotate",
-                                                   "env_intensity",
-                                                   "max_depth",
-                                                   "camera_node",
-                                                   "camera_to_world",
-                                                   "threads",
-                                                   "crop",
-                                                   "blades",
-                                                   "blade_rotation",
-                                                   "aperture_mask",
-                                                   "focal_length",
-                                                   "exposure",
-                                                   "shutter",
-                                                   "shutter_curve",
-                                                   "rolling_shutter",
-                                                   "readout",
-                                                   "iso",
-                                                   "dispersion",
-                                                   "coatings",
-                                                   "flare",
-                                                   "flare_bounces",
-                                                   "barrel_reflectance",
-                                                   "film",
-                                                   "spectral",
-                                                   "sensor_response",
-                                                   "white_balance",
-                                                   "output_space",
-                                                   "noise",
-                                                   "sensor_params",
-                                                   "raw",
-                                                   "cfa",
-                                                   "progress",
-                                                   "light_sampler"};
+    RenderRequest request;
+    RenderSpec& spec = request.spec;
+    // The scene's own settings (the identity's), as it was loaded.
+    const SceneLoadOptions& loaded = scene_->options();
+    spec.scene.file = loaded.file;
+    spec.scene.sceneIndex = loaded.sceneIndex;
+    spec.scene.access.allowExternalFiles = loaded.limits.allowExternalFiles;
+    spec.time.seconds = loaded.time.seconds;
+    spec.time.animation = loaded.time.animation;
+    // Each keyword through its row of the option table; the rows given,
+    // for the warnings of settings that do nothing.
+    std::vector<const Option*> rows;
+    py::object callback = py::none();
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
-      if (std::find(known.begin(), known.end(), name) == known.end())
-        throw py::value_error("unknown option '" + name + "' (see help(lensrt.Scene.render))");
+      if (name == "progress") {
+        callback = py::reinterpret_borrow<py::object>(value);
+        continue;
+      }
+      if (name == "camera_to_world") {
+        if (!value.is_none()) spec.worldFromCamera = toPose(value);
+        continue;
+      }
+      const Option* row = renderKeyword(name);
+      if (!row) throw py::value_error("unknown option '" + name + "' (see help(lensrt.Scene.render))");
+      setKeyword(spec, *row, value);
+      if (!value.is_none()) rows.push_back(row);
     }
-    // Every keyword read is noted: one accepted but never read is a bug
-    // (raw= once was), caught below before any work.
-    std::vector<std::string> read;
-    const auto get = [&](const char* name) -> py::object {
-      read.emplace_back(name);
-      return given.contains(name) ? py::reinterpret_borrow<py::object>(given[name]) : py::none();
-    };
-    RenderRequest request;
-    CameraOptions& c = request.camera;
-    c.lensDir = LENSRT_LENS_DIR;
-    if (const py::object v = get("camera"); !v.is_none()) c.model = toText(v, "camera");
-    if (const py::object v = get("lens"); !v.is_none()) c.lens = toPathText(v, "lens");
-    // A number, or keyframes "SECONDS:N,..." read at the scene's time.
-    if (const py::object v = get("fstop"); py::isinstance<py::str>(v) && isKeyframes(toText(v, "fstop")))
-      c.fNumberKeyframes = toText(v, "fstop");
-    else
-      c.fNumber = toOptionalDouble(v, "fstop");
-    // "auto", "inf", or metres as text or a number.
-    if (const py::object v = get("focus"); !v.is_none()) c.focus = toDistanceText(v, "focus");
-    c.focusPixel = toFocusPixel(get("focus_pixel"));
-    if (const py::object v = get("sensor"); !v.is_none()) c.sensor = toSensorText(v, "sensor");
-    if (const py::object v = get("blades"); !v.is_none()) c.blades = int(toInteger(v, "blades", 0, 64));
-    if (const py::object v = get("blade_rotation"); !v.is_none())
-      c.bladeRotationDegrees = toDouble(v, "blade_rotation");
-    if (const py::object v = get("aperture_mask"); !v.is_none())
-      c.apertureMask = toPathText(v, "aperture_mask");
-    c.focalLengthMm = toOptionalDouble(get("focal_length"), "focal_length");
-    if (const py::object v = get("exposure"); !v.is_none()) c.exposure = toText(v, "exposure");
-    c.shutter = toShutter(get("shutter"));
-    if (const py::object v = get("shutter_curve"); !v.is_none()) c.shutterCurve = toText(v, "shutter_curve");
-    c.rollingShutter = toShutter(get("rolling_shutter"));
-    if (const py::object v = get("readout"); !v.is_none()) c.readout = toText(v, "readout");
-    c.iso = toOptionalDouble(get("iso"), "iso");
-    if (const py::object v = get("dispersion"); !v.is_none())
-      c.dispersion = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "dispersion");
-    if (const py::object v = get("coatings"); !v.is_none()) c.coatings = toText(v, "coatings");
-    if (const py::object v = get("flare"); !v.is_none())
-      c.flare = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "flare");
-    if (const py::object v = get("flare_bounces"); !v.is_none())
-      c.flareBounces = int(toInteger(v, "flare_bounces", 0, 4));
-    if (const py::object v = get("barrel_reflectance"); !v.is_none())
-      c.barrelReflectance = toDouble(v, "barrel_reflectance");
-    if (const py::object v = get("film"); !v.is_none()) c.film = toText(v, "film");
-    if (const py::object v = get("spectral"); !v.is_none())
-      c.spectral = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "spectral");
-    if (const py::object v = get("sensor_response"); !v.is_none())
-      c.sensorResponse = toPathText(v, "sensor_response");
-    if (const py::object v = get("white_balance"); !v.is_none())
-      c.whiteBalance = py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)
-                           ? fmt::format("{:g}", toDouble(v, "white_balance"))
-                           : toText(v, "white_balance");
-    if (const py::object v = get("output_space"); !v.is_none()) c.outputSpace = toText(v, "output_space");
-    if (const py::object v = get("noise"); !v.is_none())
-      c.noise = py::isinstance<py::bool_>(v) ? (v.cast<bool>() ? "on" : "off") : toText(v, "noise");
-    if (const py::object v = get("sensor_params"); !v.is_none())
-      c.sensorParams = toPathText(v, "sensor_params");
-    if (const py::object v = get("raw"); !v.is_none()) request.raw.file = toPathText(v, "raw");
-    if (const py::object v = get("cfa"); !v.is_none()) request.raw.cfa = toText(v, "cfa");
-
-    FrameOptions& f = request.frame;
-    if (const py::object v = get("camera_node"); !v.is_none())
-      f.cameraNode = py::isinstance<py::int_>(v) ? std::to_string(toInteger(v, "camera_node", 0, 1 << 30))
-                                                 : toText(v, "camera_node");
-    if (const py::object v = get("camera_to_world"); !v.is_none()) f.worldFromCamera = toPose(v);
-    f.resolution = toResolution(get("res"));
-    EnvironmentArgs env;
-    env.environment = toEnvironment(get("env"));
-    if (const py::object v = get("env_rotate"); !v.is_none()) env.rotationDegrees = toDouble(v, "env_rotate");
-    if (const py::object v = get("env_intensity"); !v.is_none()) env.intensity = toDouble(v, "env_intensity");
-    if (std::abs(env.rotationDegrees) > 360) throw UsageError("--env-rotate", "expected -360 to 360 degrees");
-    if (env.intensity < 0) throw UsageError("--env-intensity", "expected a radiance scale >= 0");
-    f.environment = environmentSpec(env);
-    if (const py::object v = get("max_depth"); !v.is_none())
-      f.maxDepth = int(toInteger(v, "max_depth", 0, 1024));
-    if (const py::object v = get("light_sampler"); !v.is_none()) {
-      const std::string name = toText(v, "light_sampler");
-      const std::optional<LightSampling> sampling = parseLightSampling(name);
-      if (!sampling) throw UsageError("--light-sampler", "expected tree or power, got '" + name + "'");
-      f.lightSampling = *sampling;
-    }
-
-    RenderSettings& s = request.settings;
-    if (const py::object v = get("spp"); !v.is_none())
-      s.samplesPerPixel = int(toInteger(v, "spp", 1, 1 << 24));
-    double noiseThreshold = 0;
-    if (const py::object v = get("noise_threshold"); !v.is_none()) {
-      noiseThreshold = toDouble(v, "noise_threshold");
-      if (!(noiseThreshold > 0))
-        throw UsageError("--noise-threshold",
-                         fmt::format("expected a number > 0 (the relative standard error at which a pixel "
-                                     "stops), got {}",
-                                     noiseThreshold));
-    }
-    std::optional<int> minSpp;
-    if (const py::object v = get("min_spp"); !v.is_none()) minSpp = int(toInteger(v, "min_spp", 1, 1 << 24));
-    s.adaptive = adaptiveSampling(noiseThreshold, minSpp, s.samplesPerPixel);
-    if (const py::object v = get("seed"); !v.is_none())
-      s.seed = std::uint64_t(toInteger(v, "seed", 0, std::numeric_limits<long long>::max()));
-    if (const py::object v = get("threads"); !v.is_none()) s.threads = int(toInteger(v, "threads", 0, 4096));
-    s.aovs = parseAovs(toTextList(get("aov"), "aov"));
-    s.aovs.spp = s.adaptive.has_value();
-    s.region = toCrop(get("crop"));
-    const py::object callback = get("progress");
-    for (const std::string& name : known)
-      if (std::find(read.begin(), read.end(), name) == read.end())
-        throw std::logic_error("lensrt.Scene.render: keyword '" + name + "' is accepted but never read");
     if (!callback.is_none() && !PyCallable_Check(callback.ptr()))
       badArgument("progress", "a callable progress(done_spp, total_spp) or None", callback);
+    // A moving scene recorded over another shutter is posed again from the
+    // file this scene was read from (parsed once).
+    if (!scene_->geometry().desc().pose.empty() && spec.shutter.spanSeconds() != loaded.time.spanSeconds) {
+      if (!posedFrom_) posedFrom_ = std::make_shared<PosedFrom>(loaded);
+      const std::shared_ptr<PosedFrom> from = posedFrom_;
+      request.repose = [from, seconds = loaded.time.seconds](double span) {
+        const std::lock_guard lock(from->mutex);
+        return from->sequence.at(seconds, span);
+      };
+    }
     // The EXR's lensrt:command_line: the call, as Python would print it.
     std::string call;
     for (const auto& [key, value] : given)
@@ -378,6 +213,7 @@ class PyScene {
       }
     };
     WarningList warnings(file());
+    for (const std::string& message : unusedSettings(spec, rows)) warnings.sink().warn(inKeywords(message));
     auto out = std::make_unique<PyRenderResult>();
     {
       const py::gil_scoped_release release;
@@ -396,7 +232,8 @@ class PyScene {
       : scene_(std::move(scene)), posedFrom_(std::move(from)) {}
 
   std::shared_ptr<const Scene> scene_;
-  std::shared_ptr<PosedFrom> posedFrom_;  // made by the first at()
+  // Made by the first at(), or by a render over another span.
+  mutable std::shared_ptr<PosedFrom> posedFrom_;
 };
 
 }  // namespace
@@ -473,75 +310,7 @@ scene and every scene posed from it, each pose keeps the animation chosen and
 builds its own BVH (as lensrt render --frames does). For a sequence:
 [scene.at(f / 24).render(...) for f in range(240)].)doc")
       .def("__repr__", [](const PyScene& s) { return "lensrt.Scene('" + s.file() + "')"; })
-      .def("render", &PyScene::render,
-           R"doc(render(camera="pinhole", lens=None, fstop=None, focus="auto", focus_pixel=None,
-       sensor="full-frame", res=None, spp=16, noise_threshold=None, min_spp=None, seed=0,
-       aov=(), env=None, env_rotate=0,
-       env_intensity=1, max_depth=8, light_sampler="tree", camera_node=None, camera_to_world=None, threads=0,
-       crop=None, blades=0, blade_rotation=0, aperture_mask=None, focal_length=None,
-       exposure="normalized", shutter=None, shutter_curve="box", rolling_shutter=None,
-       readout="top-down", iso=None, dispersion="on", coatings=None,
-       flare="off", flare_bounces=2, barrel_reflectance=0, film=None, spectral="on", sensor_response=None,
-       white_balance=None,
-       output_space="srgb", noise="off", sensor_params=None, raw=None, cfa="RGGB",
-       progress=None) -> RenderResult
-
-Renders the scene as `lensrt render` does, with the same bits for the same
-settings and seed. Keywords only, each the flag of the same name:
-  camera: "pinhole", "thin", "thick" or "lens" (the full lens).
-  lens: a library name (e.g. "dgauss-50mm") or a lens file; the simpler models
-    then take its focal length, f-number and pupils.
-  fstop: f-number (None: the lens wide open, or f/2.8 without a lens), or
-    keyframes "SECONDS:N,..." read at the scene's time.
-  focus: distance in metres, "inf", or "auto" (what focus_pixel sees; default).
-  focus_pixel: (x, y) raster pixel for focus="auto" (None: the centre).
-  sensor: "full-frame", "aps-c", "mft", "1in", "WxH" in mm, or a (w, h) pair in mm.
-  res: (width, height) in pixels, or a width (height from the camera's aspect);
-    None: 640 wide.
-  spp: samples per pixel (>= 1); with noise_threshold, the most a pixel takes.
-  noise_threshold: adaptive sampling, a pixel stops once the relative standard
-    error of its mean is below this (e.g. 0.01); the image gains an "spp"
-    channel. min_spp: the samples every pixel takes first (default 16).
-  seed: random seed (>= 0).
-  aov: extra channels, a sequence or comma-separated string of "depth"
-    (metres), "normal", "albedo", "variance" (of the pixel mean).
-  env: None (the scene's light, else a default sky), "none", "constant:V",
-    "constant:R,G,B", a number V (constant radiance in W/(sr m^2)), or a lat-long
-    .exr/.hdr map. env_rotate: degrees about +Y. env_intensity: a scale.
-  max_depth: scattering events per path. threads: 0 for all cores.
-  light_sampler: "tree" (a light tree: by what each light can give the shading
-    point) or "power" (by power alone), how next-event estimation picks a light.
-  camera_node: glTF node name or index of the camera (None: the first one).
-  camera_to_world: a 4 x 4 rigid pose (metres) replacing that camera's; the
-    camera looks down its -Z axis with +Y up (glTF).
-  crop: (x0, x1, y0, y1) pixels to render, x1 and y1 exclusive.
-  blades, blade_rotation (deg), aperture_mask (a grey-scale image file),
-  focal_length (mm), exposure ("normalized" or "physical"), shutter (seconds:
-  the exposure, and the motion blur of an animated scene; 0 an instant),
-  shutter_curve ("box" or "trapezoid:F"), rolling_shutter (the readout in
-  seconds, None: a global shutter), readout ("top-down", "bottom-up",
-  "left-right", "right-left"),
-  iso, dispersion ("on"/"off" or bool), coatings ("none", "single", "multi"),
-  flare ("on"/"off" or bool: stray light in the full lens), flare_bounces (0, 2, 4),
-  barrel_reflectance (the barrel's diffuse reflectance, 0 <= K < 1, with flare),
-  film ("radiance" or "irradiance"): as the flags of `lensrt render --help`.
-  spectral: "on"/True (default) carries light at four wavelengths per sample
-    (colours upsampled to spectra, the CIE 1931 observer, sRGB); "off"/False
-    carries RGB. sensor_response: "cie1931" (default), a camera name or a .csv
-    file. white_balance: "none", "auto" or a colour temperature in K (a number).
-    output_space: "srgb", "rec2020", "acescg", "xyz" or "camera".
-  noise: "on"/True reads the exposure out through a sensor (shot, dark and read
-    noise, PRNU/DSNU, full well, ISO gain, ADC); channels noiseless.R/G/B keep
-    the render. sensor_params: a preset ("default", "full-frame", "smartphone",
-    "machine-vision") or a sensor .json file (see the README).
-  raw: also write the raw file, a .dng of the colour filter mosaic (cfa: "RGGB",
-    "BGGR", "GRBG" or "GBRG"), as `lensrt render --raw` does.
-  progress: callable(done_spp, total_spp) called between passes (which double
-    from 1 spp up to about a second each); returning False stops the render
-    there (RenderResult.finished is then False).
-The GIL is released while rendering; Ctrl-C raises KeyboardInterrupt at the
-end of the pass in flight. Bad options raise ValueError with the command
-line's message; missing files FileNotFoundError.)doc");
+      .def("render", &PyScene::render, renderDocstring().c_str());
 }
 
 }  // namespace lensrt::python

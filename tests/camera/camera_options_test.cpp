@@ -1,14 +1,15 @@
 // The camera flags: parsing, the sensor crop, and how the factory derives the
 // simpler models from a lens (thin: EFL and its f-number; pinhole: the lens's
 // field of view at that focus) and focuses automatically.
-#include "api/camera_options.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "api/camera_factory.h"
+#include "api/option_parsers.h"
 #include "camera/camera_test_util.h"
 #include "camera/pinhole_camera.h"
+#include "camera/spec_test_util.h"
 #include "camera/thin_lens_camera.h"
 #include "core/constants.h"
 #include "core/error.h"
@@ -18,44 +19,43 @@
 namespace lensrt {
 namespace {
 
-CameraOptions withLens(const std::string& model) {
-  CameraOptions o;
-  o.model = model;
-  o.lens = "dgauss-50mm";
-  o.lensDir = std::string(LENSRT_SOURCE_DIR) + "/lenses";
+test::Flags withLens(const std::string& model) {
+  test::Flags o;
+  o("--camera", std::string(model));
+  o("--lens", "dgauss-50mm");
   return o;
 }
 
-TEST(CameraOptions, ParsesSensorsAndShutterTimes) {
+TEST(CameraSpec, ParsesSensorsAndShutterTimes) {
   EXPECT_EQ(parseSensor("aps-c"), (Vec2d{23.6, 15.6}));
   EXPECT_EQ(parseSensor("36x24"), (Vec2d{36, 24}));
   EXPECT_THROW(parseSensor("36x"), UsageError);
   EXPECT_THROW(parseSensor("big"), UsageError);
-  EXPECT_DOUBLE_EQ(parseShutter("1/250"), 0.004);
-  EXPECT_DOUBLE_EQ(parseShutter("2"), 2.0);
-  EXPECT_EQ(parseShutter("0"), 0.0);  // an instant (motion blur off)
-  EXPECT_THROW(parseShutter("-1/100"), UsageError);
+  EXPECT_DOUBLE_EQ(test::seconds("1/250"), 0.004);
+  EXPECT_DOUBLE_EQ(test::seconds("2"), 2.0);
+  EXPECT_EQ(test::seconds("0"), 0.0);  // an instant (motion blur off)
+  EXPECT_THROW(test::seconds("-1/100"), UsageError);
   try {
-    parseShutter("soon");
+    test::seconds("soon");
     FAIL();
   } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("--shutter"), std::string::npos) << e.what();
   }
 }
 
-TEST(CameraOptions, CropsTheSensorToTheImageAspect) {
-  CameraOptions o;
-  const FilmGeometry wide = cameraFilm(o, 640, 360);  // 16:9 on 3:2: full width
+TEST(CameraSpec, CropsTheSensorToTheImageAspect) {
+  test::Flags o;
+  const FilmGeometry wide = cameraFilm(o.spec.camera.sensorMm, 640, 360);  // 16:9 on 3:2: full width
   EXPECT_DOUBLE_EQ(wide.sensorWidthMm, 36.0);
   EXPECT_DOUBLE_EQ(wide.sensorHeightMm, 20.25);
-  const FilmGeometry square = cameraFilm(o, 512, 512);  // full height
+  const FilmGeometry square = cameraFilm(o.spec.camera.sensorMm, 512, 512);  // full height
   EXPECT_DOUBLE_EQ(square.sensorWidthMm, 24.0);
   EXPECT_DOUBLE_EQ(square.sensorHeightMm, 24.0);
 }
 
-TEST(CameraOptions, ThinLensTakesTheLensFocalLengthAndFNumber) {
+TEST(CameraSpec, ThinLensTakesTheLensFocalLengthAndFNumber) {
   Warnings w;
-  const auto cam = makeCamera(withLens("thin"), CameraDesc{}, test::rasterFilm(64, 36), {}, w);
+  const auto cam = test::makeCamera(withLens("thin"), CameraDesc{}, test::rasterFilm(64, 36), {}, w);
   const ParaxialData p =
       computeParaxial(loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-50mm.dat"));
   const CameraInfo i = cam->info();
@@ -63,7 +63,7 @@ TEST(CameraOptions, ThinLensTakesTheLensFocalLengthAndFNumber) {
   EXPECT_NEAR(i.focalLengthMm, p.efl, 1e-9);
   EXPECT_NEAR(i.fNumber, p.fNumber, 1e-9);
   EXPECT_TRUE(std::isinf(i.focusMetres)) << "nothing to hit: --focus auto falls back to infinity";
-  const ImageMetadata m = cameraMetadata(*cam);
+  const ImageMetadata m = cameraMetadata(*cam, Exposure{});
   EXPECT_EQ(m.at("lensrt:camera_model"), "thin");
   EXPECT_EQ(m.at("lensrt:lens"), "dgauss-50mm");
   EXPECT_EQ(m.at("lensrt:focus_m"), "inf");
@@ -72,17 +72,17 @@ TEST(CameraOptions, ThinLensTakesTheLensFocalLengthAndFNumber) {
 
 // Focus breathing: the pinhole derived from a lens focused at s shows the
 // field the lens shows; at infinity that is 2 atan(h / 2 EFL).
-TEST(CameraOptions, PinholeGetsTheLensFieldOfViewAtItsFocus) {
+TEST(CameraSpec, PinholeGetsTheLensFieldOfViewAtItsFocus) {
   Warnings w;
-  CameraOptions o = withLens("pinhole");
-  o.focus = "inf";
-  const auto far = makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
+  test::Flags o = withLens("pinhole");
+  o("--focus", "inf");
+  const auto far = test::makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
   const double efl = far->info().focalLengthMm;
   const ParaxialData p =
       computeParaxial(loadLens(std::string(LENSRT_SOURCE_DIR) + "/lenses/dgauss-50mm.dat"));
   EXPECT_NEAR(efl, p.efl, 1e-6);
-  o.focus = "0.5";
-  const auto near = makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
+  o("--focus", "0.5");
+  const auto near = test::makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
   const double yfovNear = dynamic_cast<const PinholeCamera&>(*near).yfov();
   const double yfovFar = dynamic_cast<const PinholeCamera&>(*far).yfov();
   EXPECT_LT(yfovNear, yfovFar) << "the field narrows as the lens focuses closer";
@@ -92,50 +92,50 @@ TEST(CameraOptions, PinholeGetsTheLensFieldOfViewAtItsFocus) {
 }
 
 // --focus auto: the hit distance along the focus pixel's ray, projected on the axis.
-TEST(CameraOptions, AutoFocusUsesTheAxialDistanceOfWhatThePixelSees) {
+TEST(CameraSpec, AutoFocusUsesTheAxialDistanceOfWhatThePixelSees) {
   Warnings w;
-  CameraOptions o;
-  o.model = "thin";
-  o.focalLengthMm = 50;
-  o.fNumber = 4;
-  o.focusPixel = "0,0";  // the top-left pixel: its ray is oblique
+  test::Flags o;
+  o("--camera", "thin");
+  o("--focal-length", "50");
+  o("--fstop", "4");
+  o("--focus-pixel", "0,0");  // the top-left pixel: its ray is oblique
   Ray seen;
   const HitDistance hit = [&](const Ray& r) -> std::optional<double> {
     seen = r;
     return 3.0 / -r.direction.z;  // a wall 3 m in front, perpendicular to the axis
   };
-  const auto cam = makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), hit, w);
+  const auto cam = test::makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), hit, w);
   EXPECT_NEAR(cam->info().focusMetres, 3.0, 1e-4);
   EXPECT_LT(seen.direction.x, 0.0f);
   EXPECT_GT(seen.direction.y, 0.0f);
 }
 
-TEST(CameraOptions, UsageErrorsNameTheFlag) {
+TEST(CameraSpec, UsageErrorsNameTheFlag) {
   Warnings w;
-  const auto expectFlag = [&](CameraOptions o, const std::string& flag) {
+  const auto expectFlag = [&](test::Flags o, const std::string& flag) {
     try {
-      makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
+      test::makeCamera(o, CameraDesc{}, test::rasterFilm(64, 36), {}, w);
       ADD_FAILURE() << "no error for " << flag;
     } catch (const UsageError& e) {
       EXPECT_NE(std::string(e.what()).find(flag), std::string::npos) << e.what();
     }
   };
-  CameraOptions thick;
-  thick.model = "thick";
+  test::Flags thick;
+  thick("--camera", "thick");
   expectFlag(thick, "--lens");
-  CameraOptions close = withLens("lens");
-  close.focus = "0.01";
+  test::Flags close = withLens("lens");
+  close("--focus", "0.01");
   expectFlag(close, "--focus");
-  CameraOptions pixel;
-  pixel.model = "thin";
-  pixel.focusPixel = "500,2";
+  test::Flags pixel;
+  pixel("--camera", "thin");
+  pixel("--focus-pixel", "500,2");
   expectFlag(pixel, "--focus-pixel");
 }
 
 // --film: the pinhole records radiance by default (weight 1 at every pixel:
 // no cos^4), irradiance on request (cos^4 of the field angle, normalized
 // exposure); the lens models refuse radiance.
-TEST(CameraOptions, FilmIsRadianceForThePinholeAndIrradianceOnRequest) {
+TEST(CameraSpec, FilmIsRadianceForThePinholeAndIrradianceOnRequest) {
   Warnings w;
   CameraDesc gltf;
   gltf.yfov = float(60 * kPi / 180);
@@ -144,36 +144,37 @@ TEST(CameraOptions, FilmIsRadianceForThePinholeAndIrradianceOnRequest) {
   const double tanHalf = std::tan(30 * kPi / 180);
   const double cos2 = 1.0 / (1.0 + 2 * tanHalf * tanHalf);
 
-  const auto radiance = makeCamera(CameraOptions{}, gltf, test::rasterFilm(32, 32), {}, w);
+  const auto radiance = test::makeCamera(test::Flags{}, gltf, test::rasterFilm(32, 32), {}, w);
   EXPECT_EQ(radiance->info().film, "radiance");
-  EXPECT_EQ(cameraMetadata(*radiance).at("lensrt:film"), "radiance");
+  EXPECT_EQ(cameraMetadata(*radiance, Exposure{}).at("lensrt:film"), "radiance");
   EXPECT_EQ(radiance->generateRay(corner)->weight, 1.0f);
 
-  CameraOptions irr;
-  irr.film = "irradiance";
-  const auto irradiance = makeCamera(irr, gltf, test::rasterFilm(32, 32), {}, w);
-  EXPECT_EQ(cameraMetadata(*irradiance).at("lensrt:film"), "irradiance");
+  test::Flags irr;
+  irr("--film", "irradiance");
+  const auto irradiance = test::makeCamera(irr, gltf, test::rasterFilm(32, 32), {}, w);
+  EXPECT_EQ(cameraMetadata(*irradiance, Exposure{}).at("lensrt:film"), "irradiance");
   EXPECT_NEAR(irradiance->generateRay(corner)->weight, cos2 * cos2, 1e-6);
 
   // Thin, thick and lens record irradiance, and say so.
   for (const char* model : {"thin", "thick", "lens"}) {
-    EXPECT_EQ(makeCamera(withLens(model), gltf, test::rasterFilm(32, 32), {}, w)->info().film, "irradiance")
+    EXPECT_EQ(test::makeCamera(withLens(model), gltf, test::rasterFilm(32, 32), {}, w)->info().film,
+              "irradiance")
         << model;
-    CameraOptions o = withLens(model);
-    o.film = "radiance";
+    test::Flags o = withLens(model);
+    o("--film", "radiance");
     try {
-      makeCamera(o, gltf, test::rasterFilm(32, 32), {}, w);
+      test::makeCamera(o, gltf, test::rasterFilm(32, 32), {}, w);
       ADD_FAILURE() << model << " accepted --film radiance";
     } catch (const UsageError& e) {
       EXPECT_NE(std::string(e.what()).find("--film"), std::string::npos) << e.what();
     }
   }
   // Physical exposure is a film irradiance: with the radiance film it is refused.
-  CameraOptions physical;
-  physical.exposure = "physical";
-  EXPECT_THROW(makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w), UsageError);
-  physical.film = "irradiance";
-  EXPECT_NO_THROW(makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w));
+  test::Flags physical;
+  physical("--exposure", "physical");
+  EXPECT_THROW(test::makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w), UsageError);
+  physical("--film", "irradiance");
+  EXPECT_NO_THROW(test::makeCamera(physical, gltf, test::rasterFilm(32, 32), {}, w));
 }
 
 }  // namespace

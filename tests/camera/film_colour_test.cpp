@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "camera/spec_test_util.h"
 #include "color/cie.h"
 #include "color/color_space.h"
 #include "color/illuminant.h"
@@ -46,10 +47,11 @@ TEST(FilmColour, CamerasReproduceTheChartCloseToTheObserver) {
   Warnings warnings;
   for (const std::string camera :
        {"nikon-d850", "canon-eos-5d-mark-iv", "sony-ilce-7m3", "hasselblad-l1d-20c"}) {
-    CameraOptions options;
-    options.sensorResponse = camera;
-    options.whiteBalance = "none";  // D65 is white: the chart as the observer sees it under D65
-    const std::shared_ptr<const FilmResponse> film = filmColour(options, std::nullopt, warnings).response;
+    test::Flags options;
+    options("--sensor-response", std::string(camera));
+    options("--white-balance", "none");  // D65 is white: the chart as the observer sees it under D65
+    const std::shared_ptr<const FilmResponse> film =
+        filmColour(options.spec.colour, std::nullopt, warnings).response;
     ASSERT_TRUE(film);
     const Mat3d toSrgb = colorSpace(ColorSpaceId::Srgb).xyzToRgb;
     double sumError = 0, worstGrey = 0;
@@ -83,11 +85,11 @@ TEST(FilmColour, CameraRgbIsWhatTheCurvesRecord) {
     tungsten += sensor.at(nm) * blackbodySpectrum(3000, nm);
   }
   for (const char* space : {"srgb", "acescg", "camera"}) {
-    CameraOptions options;
-    options.sensorResponse = "sony-ilce-7m3";
-    options.outputSpace = space;
-    options.whiteBalance = "3000";
-    const FilmColour colour = filmColour(options, std::nullopt, warnings);
+    test::Flags options;
+    options("--sensor-response", "sony-ilce-7m3");
+    options("--output-space", std::string(space));
+    options("--white-balance", "3000");
+    const FilmColour colour = filmColour(options.spec.colour, std::nullopt, warnings);
     ASSERT_TRUE(colour.camera) << space;
     for (std::size_t p : {0u, 5u, 14u, 19u}) {
       const ColorCheckerPatch& patch = colorCheckerPatches()[p];
@@ -106,7 +108,7 @@ TEST(FilmColour, CameraRgbIsWhatTheCurvesRecord) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(colour.camera->asShotNeutral[c], tungsten[c] / tungsten.y, 1e-3);
   }
   // The CIE observer has no camera RGB: the image's is the sensor's.
-  EXPECT_FALSE(filmColour(CameraOptions{}, std::nullopt, warnings).camera);
+  EXPECT_FALSE(filmColour(ColourSpec{}, std::nullopt, warnings).camera);
 }
 
 }  // namespace

@@ -6,11 +6,12 @@
 #include <cmath>
 #include <memory>
 
-#include "api/camera_options.h"
+#include "api/camera_factory.h"
 #include "camera/camera_test_util.h"
 #include "camera/orthographic_camera.h"
 #include "camera/pinhole_camera.h"
 #include "camera/render_test_util.h"
+#include "camera/spec_test_util.h"
 #include "camera/thin_lens_camera.h"
 
 namespace lensrt {
@@ -55,27 +56,27 @@ TEST(Orthographic, ThePinholeModelRendersIt) {
   gltf.xmag = 2;
   gltf.ymag = 1;
   Warnings w;
-  CameraOptions o;
-  const auto cam = makeCamera(o, gltf, test::rasterFilm(80, 40), {}, w);
+  test::Flags o;
+  const auto cam = test::makeCamera(o, gltf, test::rasterFilm(80, 40), {}, w);
   const auto* ortho = dynamic_cast<const OrthographicCamera*>(cam.get());
   ASSERT_NE(ortho, nullptr);
   EXPECT_DOUBLE_EQ(ortho->halfWidth(), 2.0);
   EXPECT_TRUE(w.all().empty());
   // Another aspect ratio keeps ymag, and says so.
   Warnings square;
-  const auto wide = makeCamera(o, gltf, test::rasterFilm(40, 40), {}, square);
+  const auto wide = test::makeCamera(o, gltf, test::rasterFilm(40, 40), {}, square);
   EXPECT_DOUBLE_EQ(dynamic_cast<const OrthographicCamera&>(*wide).halfWidth(), 1.0);
   ASSERT_EQ(square.all().size(), 1u);
   EXPECT_NE(square.all().begin()->find("keeping ymag, the view is 2 m wide"), std::string::npos)
       << *square.all().begin();
   // A lens makes a perspective picture.
   Warnings thin;
-  CameraOptions withLens;
-  withLens.model = "thin";
-  withLens.focalLengthMm = 50;
-  withLens.fNumber = 2;
-  withLens.focus = "3";
-  const auto perspective = makeCamera(withLens, gltf, test::rasterFilm(80, 40), {}, thin);
+  test::Flags withLens;
+  withLens("--camera", "thin");
+  withLens("--focal-length", "50");
+  withLens("--fstop", "2");
+  withLens("--focus", "3");
+  const auto perspective = test::makeCamera(withLens, gltf, test::rasterFilm(80, 40), {}, thin);
   EXPECT_NE(dynamic_cast<const ThinLensCamera*>(perspective.get()), nullptr);
   const std::set<std::string> once{
       "camera 'top' is orthographic; a lens model (thin, thick, lens), --lens, --focal-length or an "
@@ -83,13 +84,12 @@ TEST(Orthographic, ThePinholeModelRendersIt) {
   EXPECT_EQ(thin.all(), once);
   // lensrt compare makes its four models with one Warnings: one warning, not four.
   for (const char* model : {"pinhole", "thick", "lens"}) {
-    CameraOptions other = withLens;
-    other.model = model;
-    other.lens = "dgauss-50mm";
-    other.lensDir = std::string(LENSRT_SOURCE_DIR) + "/lenses";
-    other.focalLengthMm.reset();
-    other.fNumber = 2.8;  // within the lens's f/2.03
-    makeCamera(other, gltf, test::rasterFilm(80, 40), {}, thin);
+    test::Flags other = withLens;
+    other("--camera", std::string(model));
+    other("--lens", "dgauss-50mm");
+    other.spec.camera.focalLengthMm.reset();
+    other("--fstop", "2.8");  // within the lens's f/2.03
+    test::makeCamera(other, gltf, test::rasterFilm(80, 40), {}, thin);
   }
   EXPECT_EQ(thin.all(), once);
 }

@@ -23,6 +23,7 @@
 #include <memory>
 
 #include "api/render_job.h"
+#include "camera/spec_test_util.h"
 #include "cli/cli_util.h"
 #include "core/warnings.h"
 #include "image/image_io.h"
@@ -79,6 +80,7 @@ struct Comparison {
 struct Job {
   std::unique_ptr<RenderJob> job;
   std::unique_ptr<Camera> lens;
+  const LensCamera* flareLens = nullptr;
 };
 // maxDepth 0: what the camera sees directly, the sources alone; 1: with
 // their light on the scene.
@@ -92,17 +94,18 @@ Job setUp(const std::filesystem::path& scene, const EnvironmentSpec& environment
   options.quiet = true;
   Job s;
   s.job = std::make_unique<RenderJob>(options, warnings);
-  CameraOptions c;
-  c.model = "lens";
-  c.lens = "dgauss-50mm";
-  c.lensDir = std::filesystem::path(LENSRT_SOURCE_DIR) / "lenses";
-  c.fNumber = 2.8;
-  c.focus = std::string("2");  // (a const char* here trips GCC 12's -Wstringop-overflow)
-  c.coatings = "none";
-  c.flare = "on";
-  c.spectral = "off";
-  c.dispersion = "off";
-  s.lens = s.job->makeCamera(c, warnings);
+  test::Flags c;
+  c("--camera", "lens");
+  c("--lens", "dgauss-50mm");
+  c("--fstop", "2.8");
+  c("--focus", "2");
+  c("--coatings", "none");
+  c("--flare", "on");
+  c("--spectral", "off");
+  c("--dispersion", "off");
+  RenderJob::MadeCamera made = s.job->makeCamera(c.spec.camera, c.spec.shutter, c.spec.flare, warnings);
+  s.flareLens = made.flareLens;
+  s.lens = std::move(made.camera);
   return s;
 }
 
@@ -120,7 +123,7 @@ Comparison compare(const std::filesystem::path& scene, const EnvironmentSpec& en
   const RenderOutput skipping = renderImage(Marked(*lens, true), job.integrator(), settings);
   RenderSettings passSettings = settings;
   if (passSpp > 0) passSettings.samplesPerPixel = passSpp;
-  const std::shared_ptr<const FlareImage> pass = job.flareLight(*lens, passSettings);
+  const std::shared_ptr<const FlareImage> pass = job.flareLight(*setup.flareLens, passSettings);
   const Image& a = all.image;
   const Image& s = skipping.image;
   const int red = a.channelIndex("R");
@@ -267,9 +270,9 @@ TEST(FlareSources, ThePassIsTheSameBitsOnAnyThreads) {
   settings.samplesPerPixel = 64;
   settings.aovs.variance = true;
   settings.threads = 1;
-  const std::shared_ptr<const FlareImage> one = setup.job->flareLight(*setup.lens, settings);
+  const std::shared_ptr<const FlareImage> one = setup.job->flareLight(*setup.flareLens, settings);
   settings.threads = 2;
-  const std::shared_ptr<const FlareImage> two = setup.job->flareLight(*setup.lens, settings);
+  const std::shared_ptr<const FlareImage> two = setup.job->flareLight(*setup.flareLens, settings);
   ASSERT_EQ(one->pixels.size(), two->pixels.size());
   EXPECT_EQ(0, std::memcmp(one->pixels.data(), two->pixels.data(), one->pixels.size() * sizeof(Rgb)));
   EXPECT_EQ(0, std::memcmp(one->variance.data(), two->variance.data(), one->variance.size() * sizeof(Rgb)));

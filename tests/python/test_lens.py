@@ -120,11 +120,11 @@ def test_relative_illumination_and_distortion_start_at_the_axis():
         (lambda l: l.trace(np.zeros((2, 3)), np.array([[0, 0, -1.0]])), "directions: expected a 2 x 3 array"),
         (lambda l: l.trace(np.zeros((1, 3)), np.array([[0, 0, 1.0]])), "directions: row 0 does not point"),
         (lambda l: l.trace("abc", np.zeros((1, 3))), "origins: expected an N x 3 array"),
-        (lambda l: l.info(fstop=-2), "--fstop: must be a positive f-number"),
+        (lambda l: l.info(fstop=-2), "fstop: must be a positive f-number"),
         (lambda l: l.info(fstop="f/2"), "fstop: expected a number, got str 'f/2'"),
         (lambda l: l.focus(0.01), "dgauss-50mm: "),
         (lambda l: l.focus(-1), "distance_m: expected a distance in metres > 0"),
-        (lambda l: l.info(sensor="big"), "--sensor: expected WIDTHxHEIGHT in mm"),
+        (lambda l: l.info(sensor="big"), "sensor: expected WIDTHxHEIGHT in mm"),
         (lambda l: l.trace(np.zeros((1, 3)), np.array([[0, 0, -1.0]]), coatings="gold"), "coatings: expected"),
     ],
 )

@@ -124,5 +124,5 @@ def test_bad_sensor_files(wall, tmp_path):
         render("nikon")
     with pytest.raises(FileNotFoundError, match="nowhere.json: no such sensor file"):
         render(tmp_path / "nowhere.json")
-    with pytest.raises(ValueError, match="--sensor-params: describes the sensor's noise, which needs --noise on"):
+    with pytest.raises(ValueError, match="sensor_params: describes the sensor's noise, which needs noise='on'"):
         wall.render(res=(8, 8), spp=1, sensor_params="default")

@@ -1,0 +1,319 @@
+#include "api/camera_factory.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "api/aperture_mask_file.h"
+#include "api/camera_models.h"
+#include "api/keyframes.h"
+#include "api/lens_loading.h"
+#include "camera/lens_camera.h"
+#include "camera/orthographic_camera.h"
+#include "camera/pinhole_camera.h"
+#include "camera/thick_lens_camera.h"
+#include "camera/thin_lens_camera.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "optics/chromatic.h"
+#include "optics/focus.h"
+#include "optics/lens_readers.h"
+#include "optics/paraxial.h"
+
+namespace lensrt {
+namespace {
+
+std::string metresText(double m) {
+  return std::isinf(m) ? "inf" : fmt::format("{:.4g}", m);
+}
+
+std::unique_ptr<Camera> buildCamera(const CameraRequest& request, const CameraDesc& gltf,
+                                    const FilmGeometry& film, const std::optional<LensPrescription>& lens,
+                                    Warnings& warnings, const HitDistance& hitDistance,
+                                    const LensCamera** flareLens);
+
+}  // namespace
+
+std::filesystem::path CameraSpec::defaultLensDir() {
+#ifdef LENSRT_LENS_DIR
+  return LENSRT_LENS_DIR;
+#else
+  return {};
+#endif
+}
+
+FilmGeometry cameraFilm(const Vec2d& sensor, int width, int height) {
+  FilmGeometry f;
+  f.width = width;
+  f.height = height;
+  const double aspect = double(width) / double(height);
+  if (aspect >= sensor.x / sensor.y) {
+    f.sensorWidthMm = sensor.x;
+    f.sensorHeightMm = sensor.x / aspect;
+  } else {
+    f.sensorHeightMm = sensor.y;
+    f.sensorWidthMm = sensor.y * aspect;
+  }
+  return f;
+}
+
+Exposure cameraExposure(const CameraSpec& c, const ShutterSpec& shutter) {
+  Exposure exposure;
+  exposure.mode = c.exposure;
+  exposure.shutterSeconds = shutter.shutterSeconds();
+  if (c.iso) exposure.iso = *c.iso;
+  return exposure;
+}
+
+std::unique_ptr<Camera> makeCamera(const CameraRequest& request, const CameraDesc& gltf,
+                                   FilmGeometry rasterFilm, const HitDistance& hitDistance,
+                                   Warnings& warnings, const LensCamera** flareLens) {
+  const CameraSpec& o = request.camera;
+  const FilmGeometry film = cameraFilm(o.sensorMm, rasterFilm.width, rasterFilm.height);
+  const bool pinhole = o.model == CameraModel::Pinhole;
+  if (gltf.orthographic) {
+    // Parallel rays are the pinhole model's radiance film without a lens; a
+    // lens (or what a lens defines: a focal length, an exposure) makes a
+    // perspective picture.
+    const bool plain = pinhole && o.lens.empty() && !o.focalLengthMm && o.film != FilmQuantity::Irradiance &&
+                       o.exposure != ExposureMode::Physical;
+    if (plain) {
+      const double aspect = double(film.width) / film.height, glTFAspect = double(gltf.xmag) / gltf.ymag;
+      if (std::abs(aspect / glTFAspect - 1.0) > 0.01)
+        warnings.warn(
+            fmt::format("camera '{}' is orthographic with xmag/ymag {:.4g}, but the image's aspect "
+                        "ratio is {:.4g}: keeping ymag, the view is {:.4g} m wide",
+                        gltf.name, glTFAspect, aspect, 2.0 * gltf.ymag * aspect));
+      return std::make_unique<OrthographicCamera>(gltf.worldFromCamera, film, gltf.ymag);
+    }
+    // One text whatever the model: `lensrt compare` makes four cameras and
+    // warns once (Warnings drops repeats).
+    warnings.warn("camera '" + gltf.name +
+                  "' is orthographic; a lens model (thin, thick, lens), --lens, --focal-length or an "
+                  "irradiance film renders it in perspective");
+  }
+
+  // Radiance film is the ideal pinhole's: a lens forms an image on a film, and
+  // what reaches the film is irradiance (a mean radiance over the pupil would
+  // hide the vignetting the lens models are there to show).
+  const bool radianceFilm = o.film == FilmQuantity::Radiance || (!o.film && pinhole);
+  if (radianceFilm && !pinhole)
+    throw UsageError("--film", "radiance film is the pinhole's; --camera " + cameraModelName(o.model) +
+                                   " records film irradiance (--film irradiance, scaled by --exposure)");
+  if (radianceFilm && o.exposure == ExposureMode::Physical)
+    throw UsageError("--exposure",
+                     "physical exposure needs the irradiance film: add --film irradiance "
+                     "(the pinhole's default film records radiance)");
+
+  // The lens, scaled to the focal length when both are given.
+  std::optional<UserLens> user;
+  std::optional<LensPrescription> lens;
+  if (!o.lens.empty()) {
+    user = loadUserLens(o.lens, o.lensDir);
+    requireRealImage(*user);
+    if (o.focalLengthMm)
+      user->prescription =
+          user->prescription.scaled(*o.focalLengthMm / computeParaxial(user->prescription).efl);
+    lens = user->prescription;
+  } else if (o.model == CameraModel::Thick || o.model == CameraModel::Lens) {
+    throw UsageError("--lens",
+                     "--camera " + cameraModelName(o.model) + " needs a lens, e.g. --lens dgauss-50mm");
+  }
+  // Everything below that the optics reject is about the lens: name it.
+  if (user)
+    return withLensErrors(
+        *user, [&] { return buildCamera(request, gltf, film, lens, warnings, hitDistance, flareLens); });
+  return buildCamera(request, gltf, film, lens, warnings, hitDistance, flareLens);
+}
+
+namespace {
+
+std::unique_ptr<Camera> buildCamera(const CameraRequest& request, const CameraDesc& gltf,
+                                    const FilmGeometry& film, const std::optional<LensPrescription>& lens,
+                                    Warnings& warnings, const HitDistance& hitDistance,
+                                    const LensCamera** flareLens) {
+  const CameraSpec& o = request.camera;
+  const Transform& worldFromCamera = gltf.worldFromCamera;
+  const Exposure exposure = cameraExposure(o, request.shutter);
+  const std::optional<ParaxialData> paraxial = lens ? std::optional(computeParaxial(*lens)) : std::nullopt;
+  const std::optional<double> keyedFNumber =
+      o.fNumberKeys.empty() ? o.fNumber : std::optional<double>(valueAt(o.fNumberKeys, request.timeSeconds));
+  const double fNumber = keyedFNumber ? *keyedFNumber : paraxial ? paraxial->fNumber : 2.8;
+  const ApertureShape aperture{o.blades, o.bladeRotationDegrees};
+
+  // Focal length and the infinity-focus field of view without a lens.
+  const double yfovGltf = gltf.yfov;
+  const double focalMm = paraxial          ? paraxial->efl
+                         : o.focalLengthMm ? *o.focalLengthMm
+                                           : 0.5 * film.sensorHeightMm / std::tan(0.5 * yfovGltf);
+  const double yfovInfinity =
+      paraxial || o.focalLengthMm ? 2.0 * std::atan(0.5 * film.sensorHeightMm / focalMm) : yfovGltf;
+
+  // The closest focus: the lens's own (its file's, else magnification 1:1),
+  // the same for all four models derived from it so that they stay
+  // comparable; an ideal thin lens without one stops at 1:1 too (2f).
+  const double closestMm = lens ? closestFocusDistanceMm(LensSystem(*lens)) : 2.0 * focalMm;
+  const std::string optic = o.model == CameraModel::Thin
+                                ? fmt::format("the thin lens (f = {:.4g} mm)", focalMm)
+                            : lens ? lens->name
+                                   : "the lens";
+
+  // Focus: what the chosen pixel sees, measured along the axis.
+  std::optional<double> focus =
+      o.focusKeys.empty() ? o.focusMetres : std::optional<double>(valueAt(o.focusKeys, request.timeSeconds));
+  if (o.focusPixel && focus) throw UsageError("--focus-pixel", "only applies with --focus auto");
+  const bool needsFocus = o.model != CameraModel::Pinhole || lens.has_value();
+  if (!focus && needsFocus) {
+    Vec2d pixel{film.width / 2.0, film.height / 2.0};
+    if (o.focusPixel) {
+      pixel = *o.focusPixel;
+      if (pixel.x < 0 || pixel.y < 0 || pixel.x >= film.width || pixel.y >= film.height)
+        throw UsageError("--focus-pixel", fmt::format("{},{} is outside the {}x{} image", pixel.x, pixel.y,
+                                                      film.width, film.height));
+      pixel = {pixel.x + 0.5, pixel.y + 0.5};
+    }
+    const PinholeCamera aim(worldFromCamera, film, yfovInfinity);
+    CameraSample s;
+    s.film = {float(pixel.x), float(pixel.y)};
+    const auto ray = aim.generateRay(s);
+    const std::optional<double> hit = hitDistance && ray ? hitDistance(ray->ray) : std::nullopt;
+    if (hit && *hit > 0.0 && std::isfinite(*hit)) {
+      // The pinhole ray's direction in camera space has z = -1: axial distance = t cos.
+      const double tanX =
+          (2.0 * pixel.x / film.width - 1.0) * std::tan(0.5 * yfovInfinity) * film.width / film.height;
+      const double tanY = (1.0 - 2.0 * pixel.y / film.height) * std::tan(0.5 * yfovInfinity);
+      focus = *hit / std::sqrt(1.0 + tanX * tanX + tanY * tanY);
+    } else {
+      warnings.warn("--focus auto: the focus pixel sees no surface; focusing at infinity");
+      focus = kInfinity;
+    }
+    // Too close for the optics: focus as close as they can.
+    const double closestM = closestMm / 1000.0;
+    if (*focus < closestM) {
+      warnings.warn(
+          fmt::format("--focus auto: the surface at {:.4g} m is closer than {} focuses; focusing at its "
+                      "closest, {:.4g} m",
+                      *focus, lens ? lens->name : optic, closestM));
+      focus = closestM;
+    }
+  }
+  const double focusM = focus.value_or(kInfinity);
+  if (needsFocus && !std::isinf(focusM) && focusM * 1000.0 < closestMm * (1 - 1e-12))
+    throw UsageError("--focus", fmt::format("{} cannot focus at {:g} m (its closest focus is {:.4g} m)",
+                                            optic, focusM, closestMm / 1000.0));
+
+  // What the camera models still reject is about the lens (makeCamera names
+  // it) or the glTF camera (RenderJob names the scene).
+  const std::string lensName = lens ? lens->name : "";
+  if (!o.apertureMask.empty() && o.model != CameraModel::Lens)
+    throw UsageError("--aperture-mask", "needs --camera lens (the mask sits at the lens's stop)");
+  switch (o.model) {
+    case CameraModel::Pinhole: {
+      const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
+      if (o.film == FilmQuantity::Irradiance)
+        return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
+      return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, lensName);
+    }
+    case CameraModel::Thin: {
+      ThinLensParams p;
+      p.focalLengthMm = focalMm;
+      p.fNumber = fNumber;
+      p.focusMetres = focusM;
+      p.aperture = aperture;
+      p.lensName = lensName;
+      if (lens && o.dispersion && hasDispersion(*lens)) p.dispersion.emplace(*lens);
+      return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
+    }
+    case CameraModel::Thick: {
+      if (keyedFNumber && *keyedFNumber < paraxial->fNumber * (1 - 1e-9))
+        warnings.warn(
+            fmt::format("{}: f/{:g} is wider than the lens allows; the thick lens opens to it anyway",
+                        lensName, *keyedFNumber));
+      ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
+      p.aperture = aperture;
+      p.lensName = lensName;
+      if (o.dispersion && hasDispersion(*lens)) p.dispersion.emplace(*lens);
+      return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
+    }
+    case CameraModel::Lens:
+      break;
+  }
+  LensCameraParams p;
+  if (!o.apertureMask.empty()) {
+    if (o.blades) throw UsageError("--aperture-mask", "replaces --blades: give one of them");
+    p.mask = std::make_shared<const ApertureMask>(readApertureMask(o.apertureMask.string()));
+  }
+  p.fNumber = fNumber;
+  p.focusMetres = focusM;
+  p.aperture = aperture;
+  p.dispersion = o.dispersion;
+  p.coatings = o.coatings;
+  const FlareSpec& flare = request.flare;
+  if (flare.on) {
+    p.flareReflections = flare.bounces;
+    p.barrelReflectance = flare.barrelReflectance;
+    // Stray light needs reflecting surfaces: bare glass unless --coatings says otherwise.
+    if (!p.coatings) p.coatings = Coating::None;
+  }
+  auto camera = std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
+  if (flareLens && camera->flare()) *flareLens = camera.get();
+  return camera;
+}
+
+// Sixteen numbers, row by row, to float precision and more.
+std::string matrixText(const Transform::Matrix& m) {
+  std::string s;
+  for (const auto& row : m)
+    for (const double v : row) s += fmt::format("{}{:.9g}", s.empty() ? "" : " ", v);
+  return s;
+}
+
+}  // namespace
+
+ImageMetadata standardCameraAttributes(const Camera& camera, const Exposure& exposure) {
+  const CameraInfo i = camera.info();
+  ImageMetadata m;
+  if (i.fNumber > 0) m["aperture"] = fmt::format("{:.6g}", i.fNumber);
+  if (i.focusMetres > 0 && std::isfinite(i.focusMetres)) m["focus"] = fmt::format("{:.6g}", i.focusMetres);
+  if (exposure.mode == ExposureMode::Physical && i.film == "irradiance") {
+    m["expTime"] = fmt::format("{:.6g}", exposure.shutterSeconds);
+    m["isoSpeed"] = fmt::format("{:.6g}", exposure.iso);
+  }
+  // OpenEXR's camera space is left-handed, looking down +Z with +Y up; glTF's
+  // looks down -Z: negate z after the world-to-camera transform. Imath
+  // multiplies row vectors, so the matrix is stored transposed.
+  const Transform::Matrix w = camera.worldFromCamera().inverse().matrix();
+  std::string text;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      text += fmt::format("{}{:.9g}", text.empty() ? "" : " ", (r == 2 ? -1.0 : 1.0) * w[r][c]);
+  m["worldToCamera"] = text;
+  // The film's RGB: linear Rec.709 primaries, D65 white (as sRGB).
+  m["chromaticities"] = "0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0.329";
+  return m;
+}
+
+ImageMetadata cameraMetadata(const Camera& camera, const Exposure& exposure) {
+  const CameraInfo i = camera.info();
+  const FilmGeometry& f = camera.film();
+  ImageMetadata standard = standardCameraAttributes(camera, exposure);
+  ImageMetadata m = {
+      {"lensrt:camera_model", i.model},
+      {"lensrt:lens", i.lens.empty() ? "none" : i.lens},
+      {"lensrt:f_number", i.fNumber > 0 ? fmt::format("{:.3g}", i.fNumber) : "none"},
+      {"lensrt:focus_m", i.focusMetres > 0 ? metresText(i.focusMetres) : "none"},
+      {"lensrt:focal_length_mm", fmt::format("{:.4g}", i.focalLengthMm)},
+      {"lensrt:sensor_mm", fmt::format("{:.4g}x{:.4g}", f.sensorWidthMm, f.sensorHeightMm)},
+      {"lensrt:exposure", i.exposure},
+      {"lensrt:coatings", i.coatings.empty() ? "off (lossless)" : i.coatings},
+      // Where the camera stood, so another renderer can take the same view
+      // (tools/validate-cycles does): glTF world space, metres, row by row.
+      {"lensrt:world_from_camera", matrixText(camera.worldFromCamera().matrix())},
+      {"lensrt:dispersion", i.dispersion ? "on" : "off"},
+      {"lensrt:film", i.film},
+  };
+  m.merge(standard);
+  return m;
+}
+
+}  // namespace lensrt
