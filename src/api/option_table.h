@@ -36,7 +36,9 @@ enum class PyValue {
 // checkpoints and parts never join.
 enum class Identity {
   Image,   // changes the pixels: part of the identity
-  None,    // never changes the pixels (threads, tile size)
+  Extent,  // how far or which part of one render (--spp, --crop, --tile): a resumed
+           // render and the parts of a frame are the same render, so not part of it
+  None,    // never changes the pixels (threads, tile size, limits)
   Output,  // what is written besides the image (the raw file): not part of it
 };
 

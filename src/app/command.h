@@ -32,5 +32,6 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext& context);
 CommandAction addCompareCommand(CLI::App& app, const CommandContext& context);
 CommandAction addMergeCommand(CLI::App& app, const CommandContext& context);
 CommandAction addSensorCommand(CLI::App& app, const CommandContext& context);
+CommandAction addOptionsCommand(CLI::App& app, const CommandContext& context);
 
 }  // namespace lensrt

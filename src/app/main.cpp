@@ -97,6 +97,7 @@ int run(int argc, char** argv) {
   add(lensrt::addCompareCommand);
   add(lensrt::addMergeCommand);
   add(lensrt::addSensorCommand);
+  add(lensrt::addOptionsCommand);
   // `lensrt --help` lists one line per command; the rest of a command's
   // description (examples, diff's statistics) stays in its own --help, after
   // its options.

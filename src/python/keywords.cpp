@@ -84,35 +84,58 @@ std::string pythonDefault(const Option& row) {
   static const RenderSpec defaults;
   const std::string shown = row.show(defaults);
   if (shown == "default" || shown.empty() || shown == "frame" || shown == "centre") return "None";
+  const bool number = shown.find_first_not_of("0123456789.-e") == std::string::npos;
   switch (row.python) {
     case PyValue::Number:
     case PyValue::Integer:
       return shown;
+    case PyValue::NumberOrText:
+    case PyValue::Pair:
+      return number ? shown : "\"" + shown + "\"";
     default:
       return "\"" + shown + "\"";
   }
 }
 
 std::string stubType(const Option& row) {
+  std::string type;
   switch (row.python) {
     case PyValue::Text:
-      return "str | None";
+      type = "str";
+      break;
     case PyValue::Path:
-      return "str | os.PathLike[str] | None";
+      type = "_Path";
+      break;
     case PyValue::Number:
-      return "float | None";
+      type = "float";
+      break;
     case PyValue::Integer:
-      return "int | None";
+      type = "int";
+      break;
     case PyValue::Switch:
-      return "bool | str | None";
+      type = "str | bool";
+      break;
     case PyValue::NumberOrText:
-      return "float | str | None";
+      type = "float | str";
+      break;
     case PyValue::Pair:
-      return "tuple[float, float] | float | str | None";
+      type = "tuple[float, float] | float | str";
+      break;
     case PyValue::List:
-      return "Sequence[str | int] | str | None";
+      type = "Sequence[str | int] | str";
+      break;
   }
-  return "object";
+  return pythonDefault(row) == "None" ? type + " | None" : type;
+}
+
+std::string renderStub() {
+  std::string stub;
+  for (const Option& row : optionTable())
+    if (row.renderKeyword && !row.keyword.empty())
+      stub += "        " + row.keyword + ": " + stubType(row) + " = " + pythonDefault(row) + ",\n";
+  stub += "        camera_to_world: npt.ArrayLike | None = None,\n";
+  stub += "        progress: Callable[[int, int], bool | None] | None = None,\n";
+  return stub;
 }
 
 std::string renderDocstring() {

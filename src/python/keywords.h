@@ -24,6 +24,9 @@ void setKeyword(RenderSpec& spec, const Option& row, py::handle value);
 std::string pythonDefault(const Option& row);
 // Its type in the stub ("int | None", "str | os.PathLike[str] | None", ...).
 std::string stubType(const Option& row);
+// The keyword lines of Scene.render's stub (python/lensrt/__init__.pyi),
+// between its "generated" markers (tools/gen-reference writes them).
+std::string renderStub();
 // Scene.render's docstring: the signature line and a line or more per keyword.
 std::string renderDocstring();
 // The keywords besides the table's rows (camera_to_world, progress).

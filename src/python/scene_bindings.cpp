@@ -290,6 +290,8 @@ void bindScene(py::module_& m) {
                            r.result.image.height, r.result.samplesPerPixel, r.result.camera);
       });
 
+  m.def("_render_stub", &renderStub,
+        "Scene.render's keyword lines of the stub, from the option table (tools/gen-reference).");
   py::class_<PyScene>(m, "Scene", R"doc(A glTF 2.0 scene (.gltf/.glb), loaded once and rendered many times.
 
 file: the scene. scene_index: which glTF scene (None: the file's default).
