@@ -4,15 +4,11 @@
 
 #include <cmath>
 
-#include "api/aperture_mask_file.h"
 #include "api/camera_models.h"
 #include "api/keyframes.h"
 #include "api/lens_loading.h"
-#include "camera/lens_camera.h"
 #include "camera/orthographic_camera.h"
 #include "camera/pinhole_camera.h"
-#include "camera/thick_lens_camera.h"
-#include "camera/thin_lens_camera.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "optics/chromatic.h"
@@ -115,7 +111,7 @@ std::unique_ptr<Camera> makeCamera(const CameraRequest& request, const CameraDes
       user->prescription =
           user->prescription.scaled(*o.focalLengthMm / computeParaxial(user->prescription).efl);
     lens = user->prescription;
-  } else if (o.model == CameraModel::Thick || o.model == CameraModel::Lens) {
+  } else if (cameraModel(o.model).needsLens) {
     throw UsageError("--lens",
                      "--camera " + cameraModelName(o.model) + " needs a lens, e.g. --lens dgauss-50mm");
   }
@@ -204,60 +200,10 @@ std::unique_ptr<Camera> buildCamera(const CameraRequest& request, const CameraDe
 
   // What the camera models still reject is about the lens (makeCamera names
   // it) or the glTF camera (RenderJob names the scene).
-  const std::string lensName = lens ? lens->name : "";
-  if (!o.apertureMask.empty() && o.model != CameraModel::Lens)
-    throw UsageError("--aperture-mask", "needs --camera lens (the mask sits at the lens's stop)");
-  switch (o.model) {
-    case CameraModel::Pinhole: {
-      const double yfov = paraxial ? lensVerticalFov(*paraxial, focusM, film.sensorHeightMm) : yfovInfinity;
-      if (o.film == FilmQuantity::Irradiance)
-        return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, exposure, fNumber, lensName);
-      return std::make_unique<PinholeCamera>(worldFromCamera, film, yfov, lensName);
-    }
-    case CameraModel::Thin: {
-      ThinLensParams p;
-      p.focalLengthMm = focalMm;
-      p.fNumber = fNumber;
-      p.focusMetres = focusM;
-      p.aperture = aperture;
-      p.lensName = lensName;
-      if (lens && o.dispersion && hasDispersion(*lens)) p.dispersion.emplace(*lens);
-      return std::make_unique<ThinLensCamera>(worldFromCamera, film, p, exposure);
-    }
-    case CameraModel::Thick: {
-      if (keyedFNumber && *keyedFNumber < paraxial->fNumber * (1 - 1e-9))
-        warnings.warn(
-            fmt::format("{}: f/{:g} is wider than the lens allows; the thick lens opens to it anyway",
-                        lensName, *keyedFNumber));
-      ThickLensParams p = thickLensFromParaxial(*paraxial, fNumber, focusM);
-      p.aperture = aperture;
-      p.lensName = lensName;
-      if (o.dispersion && hasDispersion(*lens)) p.dispersion.emplace(*lens);
-      return std::make_unique<ThickLensCamera>(worldFromCamera, film, p, exposure);
-    }
-    case CameraModel::Lens:
-      break;
-  }
-  LensCameraParams p;
-  if (!o.apertureMask.empty()) {
-    if (o.blades) throw UsageError("--aperture-mask", "replaces --blades: give one of them");
-    p.mask = std::make_shared<const ApertureMask>(readApertureMask(o.apertureMask.string()));
-  }
-  p.fNumber = fNumber;
-  p.focusMetres = focusM;
-  p.aperture = aperture;
-  p.dispersion = o.dispersion;
-  p.coatings = o.coatings;
-  const FlareSpec& flare = request.flare;
-  if (flare.on) {
-    p.flareReflections = flare.bounces;
-    p.barrelReflectance = flare.barrelReflectance;
-    // Stray light needs reflecting surfaces: bare glass unless --coatings says otherwise.
-    if (!p.coatings) p.coatings = Coating::None;
-  }
-  auto camera = std::make_unique<LensCamera>(worldFromCamera, film, *lens, p, exposure, warnings);
-  if (flareLens && camera->flare()) *flareLens = camera.get();
-  return camera;
+  const CameraBuild build{o,        request.flare,          worldFromCamera, film,     exposure,     lens,
+                          paraxial, keyedFNumber,           fNumber,         focalMm,  yfovInfinity, focusM,
+                          aperture, lens ? lens->name : "", warnings,        flareLens};
+  return cameraModel(o.model).create(build);
 }
 
 // Sixteen numbers, row by row, to float precision and more.

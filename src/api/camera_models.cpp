@@ -3,19 +3,19 @@
 namespace lensrt {
 
 const std::vector<CameraModelInfo>& cameraModels() {
-  static const std::vector<CameraModelInfo> models{
-      {CameraModel::Pinhole, "pinhole", "an ideal pinhole: no depth of field"},
-      {CameraModel::Thin, "thin", "an ideal thin lens of the lens's focal length and f-number"},
-      {CameraModel::Thick, "thick", "the lens's paraxial model: its cardinal points and pupils"},
-      {CameraModel::Lens, "lens", "traced through every element of the lens"},
-  };
+  static const std::vector<CameraModelInfo> models{pinholeModel(), thinLensModel(), thickLensModel(),
+                                                   fullLensModel()};
   return models;
 }
 
-const std::string& cameraModelName(CameraModel model) {
+const CameraModelInfo& cameraModel(CameraModel model) {
   for (const CameraModelInfo& m : cameraModels())
-    if (m.model == model) return m.name;
-  return cameraModels().front().name;
+    if (m.model == model) return m;
+  return cameraModels().front();
+}
+
+const std::string& cameraModelName(CameraModel model) {
+  return cameraModel(model).name;
 }
 
 }  // namespace lensrt
