@@ -42,9 +42,13 @@ void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadou
   if (readout) identity["lensrt:settings"] += " sensor_noise=" + readout->params.name;
 }
 
+Vec3d sensorChannelGains(const SensorReadout& r) {
+  return r.camera && r.physical ? r.camera->relativeElectrons : Vec3d{1, 1, 1};
+}
+
 Mat3d imageToSensorValues(const SensorReadout& r) {
   if (!r.camera) return Mat3d{};
-  return Mat3d::diagonal(r.physical ? r.camera->relativeElectrons : Vec3d{1, 1, 1}) * r.camera->fromImage;
+  return Mat3d::diagonal(sensorChannelGains(r)) * r.camera->fromImage;
 }
 
 void readOut(const SensorReadout& r, Image& image, ImageMetadata& metadata, std::uint64_t seed) {
@@ -68,8 +72,7 @@ void readOut(const SensorReadout& r, Image& image, ImageMetadata& metadata, std:
     for (int y = 0; y < image.height; ++y)
       for (int x = 0; x < image.width; ++x)
         for (int c = 0; c < 3; ++c) image.at(x, y, noiseless + c) = render[i++];
-    const Vec3d e =
-        (r.physical ? r.camera->relativeElectrons : Vec3d{1, 1, 1}) * r.exposure.electronsPerValue;
+    const Vec3d e = sensorChannelGains(r) * r.exposure.electronsPerValue;
     metadata["lensrt:sensor_channel_electrons"] = fmt::format("{:.9g} {:.9g} {:.9g}", e.x, e.y, e.z);
   }
   addSensorIdentity(metadata, r);

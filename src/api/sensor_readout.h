@@ -42,8 +42,11 @@ void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadou
 // the image's RGB; noiseless.R/G/B keep the render.
 void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed);
 
-// A camera's RGB as the sensor reads it: camera RGB times each channel's
-// electrons relative to the readout's basis (1 without physical exposure),
+// Each camera channel's electrons relative to the readout's basis:
+// CameraRgb::relativeElectrons with physical exposure, else 1.
+Vec3d sensorChannelGains(const SensorReadout& readout);
+
+// A camera's RGB as the sensor reads it: camera RGB times sensorChannelGains,
 // so that the readout's electrons per value apply to every channel; the
 // identity without a camera's RGB.
 Mat3d imageToSensorValues(const SensorReadout& readout);
