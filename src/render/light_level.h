@@ -14,9 +14,10 @@
 
 namespace lensrt {
 
-// The median, over the probe rays that hit a surface, of the irradiance (W/m^2
+// The median, over the probe rays that see a surface, of the irradiance (W/m^2
 // of luminance) that the scene's punctual lights and emissive triangles give
-// at the hit, facing the ray, ignoring shadows (a lamp inside its shade still
+// there (a probe goes on through transmitting surfaces, as camera paths do:
+// a lamp behind a window is seen), facing the ray, ignoring shadows (a lamp inside its shade still
 // counts); a surface that glows itself adds pi times its radiance, the
 // irradiance that would make a white diffuse surface as bright. An emissive
 // triangle counts as a point source at its centroid with the radiance of its
