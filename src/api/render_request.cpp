@@ -65,7 +65,7 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
 
   RenderResult result;
   result.metadata = job.metadata(*camera, settings, done, request.commandLine);
-  if (readout) readOut(*readout, done.output.image, result.metadata, settings.seed);
+  if (readout) readOut(*readout, done.output.image, result.metadata, settings.seed, warnings);
   if (!request.raw.file.empty() && finished)
     writeRawOutput(request.raw, done.output.image, readout, *camera, request.camera, colour.camera);
   result.metadata["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
 #include <vector>
 
 #include "core/error.h"
@@ -28,9 +29,10 @@ std::optional<SensorReadout> sensorReadout(const CameraOptions& o, const FilmGeo
   r.params = sensorParams(o.sensorParams.empty() ? "default" : o.sensorParams);
   const double shutter = shutterSeconds(o);
   r.physical = o.exposure == "physical";
+  const double pitchX = film.sensorWidthMm / film.width * 1e-3,
+               pitchY = film.sensorHeightMm / film.height * 1e-3;
+  r.pixelPitchUm = std::sqrt(pitchX * pitchY) * 1e6;
   if (r.physical) {
-    const double pitchX = film.sensorWidthMm / film.width * 1e-3,
-                 pitchY = film.sensorHeightMm / film.height * 1e-3;
     r.exposure = physicalSensorExposure(r.params, o.iso.value_or(100.0), shutter, pitchX * pitchY);
   } else {
     r.exposure = normalizedSensorExposure(r.params, shutter);
@@ -51,9 +53,32 @@ Mat3d imageToSensorValues(const SensorReadout& r) {
   return Mat3d::diagonal(sensorChannelGains(r)) * r.camera->fromImage;
 }
 
-void readOut(const SensorReadout& r, Image& image, ImageMetadata& metadata, std::uint64_t seed) {
+namespace {
+// One line: how much clips, at what pitch, and what to change.
+void warnOfClipping(const SensorReadout& r, double share, Warnings& warnings) {
+  if (!(share > kClippedShareToWarn)) return;
+  const std::string what = fmt::format("{:.0f}% of the pixels clip at the sensor's full well ({:g} e)",
+                                       100 * share, r.params.fullWellE);
+  warnings.warn(
+      r.physical
+          ? fmt::format(
+                "{}: its {:.3g} um pixels collect {:.3g} electrons at an image value of 1; use smaller "
+                "pixels (a smaller --sensor, or more of them with --res) or a lower exposure (--iso, "
+                "--shutter, --fstop)",
+                what, r.pixelPitchUm, r.exposure.electronsPerValue)
+          : fmt::format(
+                "{}: --exposure normalized fills the well at an image value of 1, whatever the pixel "
+                "pitch ({:.3g} um), and the image is brighter; use a lower exposure (dimmer lights, or "
+                "--exposure physical with --iso and --shutter)",
+                what, r.pixelPitchUm));
+}
+}  // namespace
+
+void readOut(const SensorReadout& r, Image& image, ImageMetadata& metadata, std::uint64_t seed,
+             Warnings& warnings) {
   if (!r.camera) {
     applySensorReadout(image, r.params, r.exposure, seed);
+    warnOfClipping(r, clippedShare(image, r.params, r.exposure), warnings);
   } else {
     // Read in the camera's channels, then back to the image's RGB; the
     // noiseless channels keep the render's own values, not a round trip.
@@ -66,6 +91,7 @@ void readOut(const SensorReadout& r, Image& image, ImageMetadata& metadata, std:
         for (int c = 0; c < 3; ++c) render.push_back(image.at(x, y, red + c));
     transformRgb(image, toSensor);
     applySensorReadout(image, r.params, r.exposure, seed);
+    warnOfClipping(r, clippedShare(image, r.params, r.exposure), warnings);
     transformRgb(image, *toSensor.inverse());
     const int noiseless = image.channelIndex("noiseless.R");
     std::size_t i = 0;

@@ -7,6 +7,7 @@
 
 #include "api/camera_options.h"
 #include "camera/camera.h"
+#include "core/warnings.h"
 #include "image/image.h"
 #include "sensor/camera_rgb.h"
 #include "sensor/readout.h"
@@ -17,7 +18,8 @@ namespace lensrt {
 struct SensorReadout {
   SensorParams params;
   SensorExposure exposure;
-  bool physical = false;  // --exposure physical: the curves count as quantum efficiency
+  bool physical = false;    // --exposure physical: the curves count as quantum efficiency
+  double pixelPitchUm = 0;  // the film's, for the clipping warning
   // A camera response's own RGB (FilmColour::camera): then the sensor counts
   // electrons in the camera's channels, not in the image's RGB.
   std::optional<CameraRgb> camera;
@@ -39,8 +41,11 @@ void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadou
 // (lensrt:sensor_noise, lensrt:sensor_electrons_per_value, lensrt:sensor_dn_per_electron,
 // and with a camera's RGB lensrt:sensor_channel_electrons). With a camera's
 // RGB, each channel is read in camera RGB and the reading turned back into
-// the image's RGB; noiseless.R/G/B keep the render.
-void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed);
+// the image's RGB; noiseless.R/G/B keep the render. When more than
+// kClippedShareToWarn of the pixels clip, one warning gives the share, the
+// pixel pitch and the way out.
+void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed,
+             Warnings& warnings);
 
 // Each camera channel's electrons relative to the readout's basis:
 // CameraRgb::relativeElectrons with physical exposure, else 1.

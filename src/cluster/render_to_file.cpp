@@ -147,7 +147,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   // The metadata of an image to write; with --noise on, the sensor reads it out first.
   const auto metadataOf = [&](RenderJobResult& r) {
     ImageMetadata m = job.metadata(*camera, settings, r, args.commandLine);
-    if (readout) readOut(*readout, r.output.image, m, settings.seed);
+    if (readout) readOut(*readout, r.output.image, m, settings.seed, warnings);
     m["lensrt:spp_requested"] = std::to_string(settings.samplesPerPixel);
     if (shared) m["lensrt:mpi_ranks"] = std::to_string(cluster.size());
     if (gather.bytes > 0) {
