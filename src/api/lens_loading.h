@@ -3,7 +3,7 @@
 // user typed, so its later complaints (focusing, exit pupils) name the lens
 // by its library name or not at all; withLensErrors() relabels them so every
 // error names the lens as the user gave it. Header-only: test_camera compiles
-// camera_options.cpp without the rest of the app.
+// the camera factory without the rest of the app.
 #pragma once
 
 #include <fmt/core.h>

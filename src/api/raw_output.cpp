@@ -80,9 +80,12 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
       d.pattern.name[std::size_t(y * 2 + x)] = "RGB"[colour];
     }
   d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
-  d.colorMatrix1 = cameraRgb ? rowMajor(cameraRgb->xyzToCamera) : rawColorMatrix(outputSpace);
+  // The file describes the mosaic it holds: a readout's photon counts scale
+  // the camera's channels (cameraChannels), and its matrix and neutral with them.
   if (cameraRgb)
-    d.asShotNeutral = {cameraRgb->asShotNeutral.x, cameraRgb->asShotNeutral.y, cameraRgb->asShotNeutral.z};
+    describeCameraColour(d, *cameraRgb, readout ? sensorChannelGains(*readout) : Vec3d{1, 1, 1});
+  else
+    d.colorMatrix1 = rawColorMatrix(outputSpace);
   d.exposureSeconds = exposure.shutterSeconds;
   d.iso =
       exposure.mode == ExposureMode::Physical ? exposure.iso : (readout ? readout->params.baseIso : 100.0);

@@ -112,10 +112,10 @@ PlannedShot RenderPlan::shotOf(const CameraSpec& camera, Warnings& warnings) con
 }
 
 ImageMetadata RenderPlan::finish(RenderJobResult& result, const PlannedShot& shot,
-                                 const std::string& commandLine) const {
+                                 const std::string& commandLine, Warnings& warnings) const {
   ImageMetadata m =
       job_->metadata(*shot.camera, exposure_, shot.settings, result, commandLine, shot.identity);
-  if (readout_) readOut(*readout_, result.output.image, m, shot.settings.seed);
+  if (readout_) readOut(*readout_, result.output.image, m, shot.settings.seed, warnings);
   m["lensrt:spp_requested"] = std::to_string(shot.settings.samplesPerPixel);
   return m;
 }

@@ -69,8 +69,8 @@ class RenderPlan {
 
   // A rendered image's metadata; with a sensor readout the image is read
   // out first (R, G, B then hold its reading).
-  ImageMetadata finish(RenderJobResult& result, const PlannedShot& shot,
-                       const std::string& commandLine) const;
+  ImageMetadata finish(RenderJobResult& result, const PlannedShot& shot, const std::string& commandLine,
+                       Warnings& warnings) const;
   // Writes the raw file when the spec asks for one.
   void writeRaw(const Image& image) const;
 

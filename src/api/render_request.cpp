@@ -41,7 +41,7 @@ RenderResult render(const std::shared_ptr<const Scene>& scene, const RenderReque
   if (progress && finished) progress(state.samplesDone(), settings.samplesPerPixel);
 
   RenderResult result;
-  result.metadata = plan.finish(done, plan.shot(), request.commandLine);
+  result.metadata = plan.finish(done, plan.shot(), request.commandLine, warnings);
   if (finished) plan.writeRaw(done.output.image);
   result.image = std::move(done.output.image);
   result.seconds = done.seconds;

@@ -8,6 +8,7 @@
 #include "api/sensor_spec.h"
 #include "camera/camera.h"
 #include "camera/exposure.h"
+#include "core/warnings.h"
 #include "image/image.h"
 #include "sensor/camera_rgb.h"
 #include "sensor/readout.h"
@@ -18,7 +19,8 @@ namespace lensrt {
 struct SensorReadout {
   SensorParams params;
   SensorExposure exposure;
-  bool physical = false;  // --exposure physical: the curves count as quantum efficiency
+  bool physical = false;    // --exposure physical: the curves count as quantum efficiency
+  double pixelPitchUm = 0;  // the film's, for the clipping warning
   // A camera response's own RGB (FilmColour::camera): then the sensor counts
   // electrons in the camera's channels, not in the image's RGB.
   std::optional<CameraRgb> camera;
@@ -42,11 +44,17 @@ void addSensorIdentity(ImageMetadata& identity, const std::optional<SensorReadou
 // lensrt:sensor_dn_per_electron, and with a camera's RGB
 // lensrt:sensor_channel_electrons; the identity's part is addSensorIdentity's). With a camera's
 // RGB, each channel is read in camera RGB and the reading turned back into
-// the image's RGB; noiseless.R/G/B keep the render.
-void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed);
+// the image's RGB; noiseless.R/G/B keep the render. When more than
+// kClippedShareToWarn of the pixels clip, one warning gives the share, the
+// pixel pitch and the way out.
+void readOut(const SensorReadout& readout, Image& image, ImageMetadata& metadata, std::uint64_t seed,
+             Warnings& warnings);
 
-// A camera's RGB as the sensor reads it: camera RGB times each channel's
-// electrons relative to the readout's basis (1 without physical exposure),
+// Each camera channel's electrons relative to the readout's basis:
+// CameraRgb::relativeElectrons with physical exposure, else 1.
+Vec3d sensorChannelGains(const SensorReadout& readout);
+
+// A camera's RGB as the sensor reads it: camera RGB times sensorChannelGains,
 // so that the readout's electrons per value apply to every channel; the
 // identity without a camera's RGB.
 Mat3d imageToSensorValues(const SensorReadout& readout);

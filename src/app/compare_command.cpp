@@ -181,7 +181,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     results.push_back(renderOnRanks(job, *shots[i]->camera, shots[i]->settings, args.quiet, cluster));
     if (!leader) continue;
     writeImage(dir / (std::string(modelNames[i]) + ".exr"), results.back().output.image,
-               plan.finish(results.back(), *shots[i], context.commandLine));
+               plan.finish(results.back(), *shots[i], context.commandLine, warnings));
     if (results.back().output.droppedSamples > 0)
       warnings.warn(fmt::format("{}: {} samples with NaN or infinite radiance were dropped", modelNames[i],
                                 results.back().output.droppedSamples));

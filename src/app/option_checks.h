@@ -2,7 +2,7 @@
 // Range says "Value abc not in range 1 to 16777216" for a word, and a failed
 // conversion "Could not convert: --seed = x"; these run on the text first and
 // say e.g. "--spp: expected a positive integer up to 16777216 (samples per pixel), got 'abc'".
-// Header-only: test_camera compiles camera_options.cpp without the rest of the app.
+// Header-only, for the commands that check their own flags (the render settings are the option table's).
 #pragma once
 
 #include <fmt/core.h>

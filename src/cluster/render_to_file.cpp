@@ -116,7 +116,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   GatherCost gather;  // under MPI, once the render is done
   // The metadata of an image to write; with --noise on, the sensor reads it out first.
   const auto metadataOf = [&](RenderJobResult& r) {
-    ImageMetadata m = plan.finish(r, plan.shot(), args.commandLine);
+    ImageMetadata m = plan.finish(r, plan.shot(), args.commandLine, warnings);
     if (shared) m["lensrt:mpi_ranks"] = std::to_string(cluster.size());
     if (gather.bytes > 0) {
       m["lensrt:gather_seconds"] = fmt::format("{:.3f}", gather.seconds);

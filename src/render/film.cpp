@@ -16,13 +16,18 @@ std::vector<std::string> filmChannels(const AovSelection& aovs) {
   return c;
 }
 
-void PixelAccumulator::add(const PathSample& s, float weight) {
+void PixelAccumulator::add(const PathSample& s, float weight, bool lensReflected) {
   const Rgb l = s.radiance * weight;
   if (!isFinite(l)) {
     ++dropped_;
     return;
   }
   ++count_;
+  ++reached_;
+  if (!lensReflected) {
+    ++seen_;
+    covered_ += s.hit;
+  }
   for (int k = 0; k < 3; ++k) {
     sum_[k] += l[k];
     sumSq_[k] += double(l[k]) * l[k];
@@ -65,7 +70,9 @@ void PixelAccumulator::write(const AovSelection& aovs, float* out) const {
   for (int k = 0; k < 3; ++k) mean[k] = n > 0 ? sum_[k] / n : 0.0;
   int c = 0;
   for (int k = 0; k < 3; ++k) out[c++] = float(mean[k]);
-  out[c++] = n > 0 ? float(double(hits_) / n) : 0.0f;
+  out[c++] = seen_ > 0      ? float(double(covered_) / double(seen_))
+             : reached_ > 0 ? float(double(hits_) / double(reached_))
+                            : 0.0f;
   if (aovs.depth) out[c++] = hits_ > 0 ? float(distance_ / double(hits_)) : 0.0f;
   if (aovs.normal) {
     const float len = length(normal_);
@@ -99,6 +106,9 @@ void PixelAccumulator::saveState(std::byte* out) const {
   for (double v : sumSq_) put(out, v);
   put(out, count_);
   put(out, hits_);
+  put(out, reached_);
+  put(out, seen_);
+  put(out, covered_);
   put(out, dropped_);
   put(out, distance_);
   for (double v : albedo_) put(out, v);
@@ -112,6 +122,9 @@ void PixelAccumulator::loadState(const std::byte* in) {
   for (double& v : sumSq_) get(in, v);
   get(in, count_);
   get(in, hits_);
+  get(in, reached_);
+  get(in, seen_);
+  get(in, covered_);
   get(in, dropped_);
   get(in, distance_);
   for (double& v : albedo_) get(in, v);

@@ -4,8 +4,14 @@
 // whose film positions fall inside it. Samples are added in sample order, so
 // the floating-point sums (and the image) are identical for any thread count.
 //
-// Channels: R,G,B (mean radiance times the camera weight), A (fraction of
-// camera samples whose ray hit geometry), then the AOVs asked for:
+// Channels: R,G,B (mean radiance times the camera weight), A (coverage: of
+// the camera samples that reach the scene straight through the lens, the
+// fraction whose ray hits geometry; samples the lens blocks are left out, so
+// that its vignetting stays in RGB, and so are flare's, reflected in the
+// lens, whose ghosts of other directions are light over the image, not what
+// it shows; a pixel none of whose samples came straight, as can happen with
+// flare at a few spp, takes the coverage of those reflected), then the AOVs
+// asked for:
 //  - depth.Z: mean camera-ray hit distance in metres over the samples that hit;
 //    0 where no sample hit (background).
 //  - normal.X/Y/Z: mean world shading normal at the first hit, facing the
@@ -40,8 +46,9 @@ std::vector<std::string> filmChannels(const AovSelection& aovs);
 
 class PixelAccumulator {
  public:
-  // `weight` is the camera ray's weight; a blocked camera ray adds a zero sample.
-  void add(const PathSample& s, float weight);
+  // `weight` is the camera ray's weight; a blocked camera ray adds a zero
+  // sample. `lensReflected`: the ray was reflected in the lens (flare).
+  void add(const PathSample& s, float weight, bool lensReflected = false);
   void addBlocked();
   std::uint64_t droppedSamples() const { return dropped_; }
   // Every sample added, dropped ones included: the index of the next one.
@@ -58,7 +65,7 @@ class PixelAccumulator {
 
   // The running sums as bytes (native byte order), so a checkpoint can
   // continue them exactly: doubles stay doubles, nothing is rounded.
-  static constexpr std::size_t kStateBytes = 13 * 8 + 3 * 4;
+  static constexpr std::size_t kStateBytes = 16 * 8 + 3 * 4;
   void saveState(std::byte* out) const;
   void loadState(const std::byte* in);
 
@@ -67,6 +74,10 @@ class PixelAccumulator {
   double sumSq_[3] = {0, 0, 0};
   std::uint64_t count_ = 0;
   std::uint64_t hits_ = 0;
+  // A: samples that reached the scene (reached_, straight or reflected in the
+  // lens; hits_ of them hit), those that came straight (seen_), and those of
+  // them that hit (covered_).
+  std::uint64_t reached_ = 0, seen_ = 0, covered_ = 0;
   std::uint64_t dropped_ = 0;
   double distance_ = 0;
   Vec3f normal_{0, 0, 0};

@@ -8,7 +8,10 @@
 namespace lensrt {
 namespace {
 
-constexpr std::array<char, 8> kMagic{'L', 'R', 'T', 'S', 'U', 'M', 'S', '1'};
+// Version 2 keeps each pixel's coverage counts (alpha); version 1's sums
+// cannot give them.
+constexpr std::array<char, 8> kMagic{'L', 'R', 'T', 'S', 'U', 'M', 'S', '2'};
+constexpr std::array<char, 8> kMagicVersion1{'L', 'R', 'T', 'S', 'U', 'M', 'S', '1'};
 // magic, x0 x1 y0 y1, samples done, AOV bits (int32 each), blocked rays (uint64).
 constexpr std::size_t kHeaderBytes = kMagic.size() + 6 * 4 + 8;
 
@@ -69,6 +72,9 @@ std::vector<std::byte> FilmState::toBytes() const {
 }
 
 FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
+  if (bytes.size() >= kMagic.size() && std::memcmp(bytes.data(), kMagicVersion1.data(), kMagic.size()) == 0)
+    throw std::invalid_argument(
+        "running sums of an older lensrt, without the counts its alpha needs: render it again");
   if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic.data(), kMagic.size()) != 0)
     throw std::invalid_argument("not a lensrt running-sums file");
   const std::byte* p = bytes.data() + kMagic.size();

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "optics/lens_system.h"  // refract
 #include "render/lights.h"
 
 namespace lensrt {
@@ -57,6 +58,44 @@ std::vector<EmissiveTriangle> emissiveTriangles(const MaterialTable& materials) 
   return out;
 }
 
+// The surface a probe ray sees, as a camera path sees it: past transmitting
+// surfaces (glass, water: glTF's KHR_materials_transmission), straight
+// through a thin-walled sheet and refracted (Snell, at the material's index)
+// into and out of a volume, reflected where the refraction is total. The
+// ray that reaches the surface goes with it; nullopt when the ray leaves the
+// scene, or after many crossings.
+struct SeenSurface {
+  SurfaceHit hit;
+  Ray ray;
+};
+std::optional<SeenSurface> seenSurface(const RenderScene& scene, const MaterialTable& materials, Ray ray) {
+  constexpr int kMaxCrossings = 16;
+  for (int crossings = 0; crossings < kMaxCrossings; ++crossings) {
+    const std::optional<SurfaceHit> hit = scene.intersect(ray);
+    if (!hit) return std::nullopt;
+    const ShadingPoint sp = evaluateMaterial(materials, *hit, -ray.direction);
+    if (!((1 - sp.bsdf.base.metallic) * sp.bsdf.transmission > 0)) return SeenSurface{*hit, ray};
+    const Material& m = materials.material(hit->material);
+    const Vec3f n = sp.geometricNormal;  // facing the ray's origin
+    Vec3d out = Vec3d(ray.direction);
+    if (!m.thinWalled()) {
+      // Entering through the winding's front, leaving through its back.
+      const double ior = std::max(1.0f, m.ior), inside = sp.frontFace ? ior : 1.0,
+                   outside = sp.frontFace ? 1.0 : ior;
+      if (!refract(Vec3d(ray.direction), Vec3d(n), outside, inside, out))
+        out = Vec3d(ray.direction - n * (2 * dot(ray.direction, n)));
+    }
+    const Vec3f d = normalize(Vec3f(out));
+    // Offset to the side the ray goes on to, as camera paths do.
+    const float scale = 2e-4f * std::max({1.0f, std::abs(hit->position.x), std::abs(hit->position.y),
+                                          std::abs(hit->position.z)});
+    ray.origin = hit->position + (dot(d, n) > 0 ? n : -n) * scale;
+    ray.direction = d;
+    ray.tMax = kInfinityF;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<double> medianEmitterIrradiance(const RenderScene& scene, const MaterialTable& materials,
@@ -68,9 +107,11 @@ std::optional<double> medianEmitterIrradiance(const RenderScene& scene, const Ma
   constexpr std::size_t kMaxPairs = std::size_t(1) << 22;
   const std::size_t stride = std::max<std::size_t>(1, triangles.size() * probes.size() / kMaxPairs);
   std::vector<double> levels;
-  for (const Ray& ray : probes) {
-    const std::optional<SurfaceHit> hit = scene.intersect(ray);
-    if (!hit) continue;
+  for (const Ray& probe : probes) {
+    const std::optional<SeenSurface> seen = seenSurface(scene, materials, probe);
+    if (!seen) continue;
+    const Ray& ray = seen->ray;
+    const SurfaceHit* hit = &seen->hit;
     // The side the camera sees.
     const Vec3f n =
         dot(hit->geometricNormal, ray.direction) > 0 ? -hit->geometricNormal : hit->geometricNormal;

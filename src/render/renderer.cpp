@@ -129,7 +129,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           } else {
             PathSample path = integrator.trace(cr->ray, samplers[k], lambdas[k], cr->lensReflected);
             if (!dispersionWeights.empty()) path.radiance = path.radiance * dispersionWeights[k];
-            acc.add(path, cr->weight);
+            acc.add(path, cr->weight, cr->lensReflected);
           }
         }
       }

@@ -98,6 +98,15 @@ void writeTiff(const std::filesystem::path& path, const std::filesystem::path& f
 
 }  // namespace
 
+void describeCameraColour(DngDescription& d, const CameraRgb& camera, const Vec3d& channelGains) {
+  const Vec3d gains = channelGains / channelGains.y;
+  const Mat3d m = Mat3d::diagonal(gains) * camera.xyzToCamera;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) d.colorMatrix1[std::size_t(3 * r + c)] = m(r, c);
+  const Vec3d neutral = gains * camera.asShotNeutral;
+  d.asShotNeutral = {neutral.x, neutral.y, neutral.z};
+}
+
 void writeDng(const std::filesystem::path& file, const Mosaic& mosaic, const DngDescription& description) {
   if (mosaic.width <= 0 || mosaic.height <= 0 ||
       mosaic.dn.size() != std::size_t(mosaic.width) * std::size_t(mosaic.height))

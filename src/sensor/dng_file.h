@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "core/vec.h"
+#include "sensor/camera_rgb.h"
 #include "sensor/mosaic.h"
 
 namespace lensrt {
@@ -23,6 +25,15 @@ struct DngDescription {
 // sRGB, D65 white (IEC 61966-2-1).
 inline constexpr std::array<double, 9> kXyzToLinearSrgb{
     3.2404542, -1.5371385, -0.4985314, -0.9692660, 1.8760108, 0.0415560, 0.0556434, -0.2040259, 1.0572252};
+
+// ColorMatrix1 and AsShotNeutral of a mosaic of `camera`'s RGB whose
+// channels a readout scaled by `channelGains` (each channel's electrons per
+// camera value, CameraRgb::relativeElectrons with physical exposure). A raw
+// developer balances and converts the values the file holds, so the matrix's
+// rows and the neutral carry the same gains, relative to green's (the
+// neutral's green stays 1); without them a photon-counted mosaic develops
+// with the channels' electron ratios as a colour cast.
+void describeCameraColour(DngDescription& description, const CameraRgb& camera, const Vec3d& channelGains);
 
 // Writes `mosaic` as a DNG; throws InputError(file, ...) when it cannot.
 void writeDng(const std::filesystem::path& file, const Mosaic& mosaic, const DngDescription& description);

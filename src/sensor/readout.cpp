@@ -319,4 +319,21 @@ void applySensorReadout(Image& image, const SensorParams& p, const SensorExposur
   image = std::move(out);
 }
 
+double clippedShare(const Image& image, const SensorParams& p, const SensorExposure& e) {
+  const int first = image.channelIndex("R");
+  if (first < 0 || image.channelIndex("G") != first + 1 || image.channelIndex("B") != first + 2)
+    throw std::invalid_argument("the sensor reads R, G, B channels side by side");
+  if (image.width <= 0 || image.height <= 0) return 0.0;
+  // As Reader::dn clips: the full well's DN, or the ADC's top.
+  const double saturationDn =
+      std::min(p.maxDn(), roundHalfAway(p.blackLevelDn + p.fullWellE * p.gainDnPerE * e.analogGain));
+  const float saturation = float(dnToValue(p, e, saturationDn));
+  std::size_t clipped = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      clipped += image.at(x, y, first) >= saturation || image.at(x, y, first + 1) >= saturation ||
+                 image.at(x, y, first + 2) >= saturation;
+  return double(clipped) / (double(image.width) * double(image.height));
+}
+
 }  // namespace lensrt

@@ -50,4 +50,15 @@ double dnToValue(const SensorParams& params, const SensorExposure& exposure, dou
 void applySensorReadout(Image& image, const SensorParams& params, const SensorExposure& exposure,
                         std::uint64_t seed);
 
+// The share of `image`'s pixels whose reading (R, G, B after
+// applySensorReadout) is at the sensor's saturation in some channel: a full
+// well, or the ADC's top where that comes first. Readings are exact DN
+// values, so the test is exact.
+double clippedShare(const Image& image, const SensorParams& params, const SensorExposure& exposure);
+
+// Above this share of clipped pixels the readout says so: a photo's lamps
+// and sun glints clip a few per cent of it; more is an exposure (or a pixel
+// size) the sensor cannot hold.
+inline constexpr double kClippedShareToWarn = 0.05;
+
 }  // namespace lensrt

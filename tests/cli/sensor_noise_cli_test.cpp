@@ -102,5 +102,45 @@ TEST(SensorNoiseCli, ListedPresetsAreSensorFiles) {
   EXPECT_EQ(same.status, 0) << same.out;
 }
 
+// Physical exposure on the default 36 x 24 mm sensor at 90 x 60 pixels: 400
+// um pixels collect 2.55e8 electrons at an image value of 1 (78 / ISO 100 lux
+// s x 4.09e15 photons / lux s m^2 x (400 um)^2 x QE 0.5), so flat_wall's
+// values of 0.30 to 2.7 (at the default 1/100 s) fill the 20000 e well many
+// times over and every pixel clips: one warning, with the share, the pitch
+// and the way out. A 0.36 x 0.24 mm sensor (4 um pixels, 25500 e per value)
+// at 1/500 s puts the brightest channel, 0.55, at 14000 e: nothing clips, and
+// nothing is said.
+TEST(SensorNoiseCli, ClippingMostPixelsWarnsOnce) {
+  const TempDir dir;
+  const auto run = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {
+        "render", kScene,  "--film", "irradiance", "--exposure", "physical", "--res",
+        "90x60",  "--spp", "2",      "--noise",    "on",         "-o",       (dir / "a.exr").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runLensrt(args);
+  };
+  const std::string warning = "of the pixels clip at the sensor's full well";
+  const RunResult full = run({});
+  ASSERT_EQ(full.status, 0) << full.err;
+  const std::size_t at = full.err.find(warning);
+  ASSERT_NE(at, std::string::npos) << full.err;
+  EXPECT_EQ(full.err.find(warning, at + 1), std::string::npos) << "more than once:\n" << full.err;
+  for (const char* part : {"100% of the pixels", "full well (20000 e)", "its 400 um pixels", "--sensor",
+                           "--res", "a lower exposure (--iso, --shutter, --fstop)"})
+    EXPECT_NE(full.err.find(part), std::string::npos) << part << "\n" << full.err;
+  const RunResult normal = run({"--sensor", "0.36x0.24", "--shutter", "1/500"});
+  ASSERT_EQ(normal.status, 0) << normal.err;
+  EXPECT_EQ(normal.err.find(warning), std::string::npos) << normal.err;
+  ImageMetadata meta;
+  const Image img = readImage(dir / "a.exr", &meta);
+  double peak = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (const char* c : {"noiseless.R", "noiseless.G", "noiseless.B"})
+        peak = std::max(peak, double(img.at(x, y, img.channelIndex(c))));
+  // The silence means something only if the render comes near the well.
+  EXPECT_GT(peak * std::stod(meta["lensrt:sensor_electrons_per_value"]), 10000.0);
+}
+
 }  // namespace
 }  // namespace lensrt

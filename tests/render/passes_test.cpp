@@ -122,6 +122,15 @@ TEST(Passes, DamagedSumsAreRefused) {
   bytes[0] = std::byte{'X'};
   EXPECT_THROW(FilmState::fromBytes(bytes), std::invalid_argument);
   EXPECT_THROW(FilmState::fromBytes({}), std::invalid_argument);
+  // Version 1 (before alpha's coverage counts) says so.
+  const std::string version1 = "LRTSUMS1";
+  std::memcpy(bytes.data(), version1.data(), version1.size());
+  try {
+    FilmState::fromBytes(bytes);
+    ADD_FAILURE() << "version-1 sums were read";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("older lensrt"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
