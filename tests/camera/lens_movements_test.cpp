@@ -497,6 +497,45 @@ TEST(LensMovements, FullLensTiltFollowsTheHingeRuleApproximately) {
   }
 }
 
+// The perspective centre stays the entrance pupil's: the thick lens's ray
+// from any film point of a tilted, shifted film through the exit pupil's
+// centre (the chief ray) leaves through the entrance pupil's centre, the
+// camera origin (the two pupils are conjugate), to float precision.
+TEST(LensMovements, ThickLensChiefRaysPassTheEntrancePupilCentre) {
+  ThickLensParams p = thickLensFromParaxial(computeParaxial(test::lectureDoubleGauss(0.5)), 2.8, 3.0);
+  p.movements = tilt(8, 30);
+  p.movements.shiftMm = {4, -3};
+  const ThickLensCamera cam(Transform(), test::testFilm(), p);
+  for (const Vec2d raster : {Vec2d{10, 10}, Vec2d{630, 20}, Vec2d{320, 180}, Vec2d{100, 350}}) {
+    const auto r = cameraRay(cam, raster, {0.5, 0.5});
+    ASSERT_TRUE(r);
+    const Vec3d o(r->origin), d = normalize(Vec3d(r->direction));
+    const Vec3d miss = o - d * dot(o, d);  // the line's nearest point to the origin
+    EXPECT_LT(length(miss) * 1000.0, 1e-4) << "mm from the entrance pupil's centre, raster " << raster.x;
+  }
+}
+
+// The flare light pass finds where a ray from the lens meets the moved film
+// (LensCamera::rasterOfFilmHit): the raster position whose film point, from
+// the conventions, that ray reaches.
+TEST(LensMovements, FullLensFindsTheRasterOfAFilmHit) {
+  LensMovements m = tilt(6, 120);
+  m.shiftMm = {-2, 5};
+  const LensCamera cam = fullLens(2.8, 3.0, m);
+  const double a = 120 * kDeg, tl = 6 * kDeg;
+  const Vec2d axis{std::cos(a), std::sin(a)}, across{-std::sin(a), std::cos(a)};
+  for (const Vec2d raster : {Vec2d{10.5, 20.25}, Vec2d{600, 300}, Vec2d{320, 180}}) {
+    const Vec2d up = Vec2d{(raster.x / 640 - 0.5) * 36, (0.5 - raster.y / 360) * 20.25} + m.shiftMm;
+    const double wa = up.x * axis.x + up.y * axis.y, wb = up.x * across.x + up.y * across.y;
+    const Vec2d lateral = axis * wa + across * (wb * std::cos(tl));
+    const Vec3d filmPoint{-lateral.x, -lateral.y, cam.filmZ() - wb * std::sin(tl)};
+    const Vec3d dir = normalize(Vec3d{0.3, -0.2, 1.0});
+    const Vec2d got = cam.rasterOfFilmHit({filmPoint - dir * 20.0, dir});
+    EXPECT_NEAR(got.x, raster.x, 1e-9);
+    EXPECT_NEAR(got.y, raster.y, 1e-9);
+  }
+}
+
 // The film records E = integral of L cos(th_film) cos(th_lens) / d^2: at the
 // frame's centre the chief ray runs along the axis, so the tilted film's
 // normal takes cos(tilt) of it (and the lens side keeps its cos of 1):
