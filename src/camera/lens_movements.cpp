@@ -15,14 +15,14 @@ std::string LensMovements::describe() const {
   std::string s;
   char buf[96];
   if (shifted()) {
-    std::snprintf(buf, sizeof buf, " shift=%g,%gmm", shiftMm.x, shiftMm.y);
+    std::snprintf(buf, sizeof buf, " shift=%.9g,%.9gmm", shiftMm.x, shiftMm.y);
     s += buf;
   }
   if (tilted()) {
-    std::snprintf(buf, sizeof buf, " tilt=%gdeg", tiltDegrees);
+    std::snprintf(buf, sizeof buf, " tilt=%.9gdeg", tiltDegrees);
     s += buf;
     if (tiltAxisDegrees != 0.0) {
-      std::snprintf(buf, sizeof buf, " tilt-axis=%gdeg", tiltAxisDegrees);
+      std::snprintf(buf, sizeof buf, " tilt-axis=%.9gdeg", tiltAxisDegrees);
       s += buf;
     }
   }
