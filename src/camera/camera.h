@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 
+#include "camera/lens_movements.h"
 #include "core/ray.h"
 #include "core/transform.h"
 #include "core/vec.h"
@@ -64,6 +65,7 @@ struct CameraInfo {
   // factor, exposure scale) or "radiance" (the mean radiance along the camera
   // rays: only the ideal pinhole offers it, as pbrt, Cycles and Mitsuba do).
   std::string film = "irradiance";
+  LensMovements movements = {};  // the film's shift and tilt (lens_movements.h); none by default
 };
 
 // A focus distance for describe(): "2m", "infinity".

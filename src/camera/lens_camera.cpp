@@ -21,7 +21,9 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
     : Camera(worldFromCamera, film),
       params_(params),
       exposure_(exposure),
-      dispersion_(params.dispersion && hasDispersion(prescription)) {
+      dispersion_(params.dispersion && hasDispersion(prescription)),
+      movedFilm_(params.movements) {
+  checkLensMovements(params.movements, film, "lens");
   const ParaxialData open = computeParaxial(prescription);
   double n = params.fNumber > 0.0 ? params.fNumber : open.fNumber;
   // A polygon of the f-number's area needs a round stop as wide as its corners.
@@ -34,8 +36,19 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
   stopRadius_ = lens_->prescription().surfaces[p.stopIndex].apertureDiameter / 2.0;
   if (params.aperture.blades) polygon_.emplace(stopRadius_ / widen, params.aperture);
   filmZ_ = lens_->rearZ() + focusFilmDistance(*lens_, params.focusMetres * 1000.0);
-  bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, sensorHalfDiagonalMm(film) * (1.0 + 1e-6),
-                                              params.pupilIntervals);
+  if (!params.movements.any()) {
+    bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, sensorHalfDiagonalMm(film) * (1.0 + 1e-6),
+                                                params.pupilIntervals);
+  } else {
+    // Out to the farthest film point the moved frame reaches, for every
+    // depth a tilted film's points take (ExitPupilBounds' slab): bounds
+    // that hold for each point where it actually lies.
+    const MovedFilm::DepthRange depth = movedFilm_.depthRange(film);
+    if (!(filmZ_ + depth.min > lens_->rearZ()))
+      throw std::invalid_argument("lens: the tilted film reaches the lens's rear vertex");
+    bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, movedFilm_.maxRadius(film) * (1.0 + 1e-6),
+                                                params.pupilIntervals, FilmDepthRange{depth.min, depth.max});
+  }
   scale_ = lensrt::exposureScale(exposure, fNumber_);
   if (params.flareReflections) {
     flareOptions_.maxReflections = *params.flareReflections;
@@ -71,18 +84,20 @@ std::string LensCamera::describe() const {
          (params_.flareReflections && params_.barrelReflectance > 0.0 ? barrelText(params_.barrelReflectance)
                                                                       : std::string()) +
          (params_.coatings ? " coatings=" + coatingName(*params_.coatings) : std::string()) +
-         (params_.mask ? " mask=" + params_.mask->describe() : std::string());
+         (params_.mask ? " mask=" + params_.mask->describe() : std::string()) + params_.movements.describe();
 }
 
 CameraInfo LensCamera::info() const {
-  return {"lens",
-          lens_->prescription().name,
-          fNumber_,
-          params_.focusMetres,
-          lens_->paraxial().efl,
-          lensrt::describe(exposure_),
-          dispersion_,
-          params_.coatings ? coatingName(*params_.coatings) : std::string()};
+  CameraInfo i{"lens",
+               lens_->prescription().name,
+               fNumber_,
+               params_.focusMetres,
+               lens_->paraxial().efl,
+               lensrt::describe(exposure_),
+               dispersion_,
+               params_.coatings ? coatingName(*params_.coatings) : std::string()};
+  i.movements = params_.movements;
+  return i;
 }
 
 namespace {
@@ -96,6 +111,14 @@ double irradianceIntegrand(const Vec3d& filmPoint, const Vec3d& pupilPoint) {
 }
 
 }  // namespace
+
+double LensCamera::integrand(const Vec3d& filmPoint, const Vec3d& pupilPoint) const {
+  if (!params_.movements.tilted()) return irradianceIntegrand(filmPoint, pupilPoint);
+  // cos(th_film) against the tilted film's normal: n.(q - p) dz / d^4.
+  const Vec3d d = pupilPoint - filmPoint;
+  const double d2 = lengthSquared(d);
+  return dot(movedFilm_.normal(), d) * -d.z / (d2 * d2);
+}
 
 std::optional<LensRay> LensCamera::traceLens(const LensRay& in, double wavelengthNm) const {
   if (!polygon_ && !params_.mask) return lens_->traceFromFilm(in, wavelengthNm);
@@ -125,7 +148,22 @@ std::optional<Ray> LensCamera::traceThrough(const Vec2f& raster, const Vec2d& pu
 
 Vec3d LensCamera::filmPointMm(const Vec2f& raster) const {
   const Vec2d up = uprightSensorPointMm(film(), raster);
+  if (params_.movements.any()) return Vec3d{0.0, 0.0, filmZ_} + movedFilm_.offset(up);
   return {-up.x, -up.y, filmZ_};  // the inverted real image
+}
+
+Vec2d LensCamera::rasterOfFilmHit(const LensRay& t) const {
+  if (!params_.movements.any()) {
+    const double s = (filmZ_ - t.origin.z) / t.direction.z;
+    const Vec2d upright{-(t.origin.x + s * t.direction.x), -(t.origin.y + s * t.direction.y)};
+    return rasterOfUprightSensorPointMm(film(), upright);
+  }
+  // The moved film's plane through (0, 0, filmZ) with its normal.
+  const Vec3d& n = movedFilm_.normal();
+  const Vec3d toPivot = Vec3d{0.0, 0.0, filmZ_} - t.origin;
+  const double s = dot(n, toPivot) / dot(n, t.direction);
+  const Vec3d hit = t.origin + t.direction * s;
+  return rasterOfUprightSensorPointMm(film(), movedFilm_.upright(hit - Vec3d{0.0, 0.0, filmZ_}));
 }
 
 LensCamera::PupilRay LensCamera::pupilRay(const CameraSample& s) const {
@@ -135,7 +173,7 @@ LensCamera::PupilRay LensCamera::pupilRay(const CameraSample& s) const {
 
 LensCamera::PupilRay LensCamera::pupilRay(const Vec3d& p, const std::optional<PupilSample>& ps) const {
   if (!ps) return {{p, Vec3d{}}, 0.0};
-  return {{p, ps->point - p}, scale_ * irradianceIntegrand(p, ps->point) / ps->pdf};
+  return {{p, ps->point - p}, scale_ * integrand(p, ps->point) / ps->pdf};
 }
 
 // Lens space (mm, from the front vertex) to camera space (metres, from the entrance pupil).
@@ -188,7 +226,7 @@ std::optional<CameraRay> LensCamera::flareRay(const CameraSample& s) const {
   const double pdf = 0.5 * bounds_->pdf({p.x, p.y}, point) + 0.5 * inDisc / (kPi * discRadius * discRadius);
   if (!(pdf > 0.0)) return std::nullopt;
   const Vec3d target{point.x, point.y, bounds_->planeZ()};
-  const double weight = scale_ * irradianceIntegrand(p, target) / pdf;
+  const double weight = scale_ * integrand(p, target) / pdf;
   const double wavelength = tracesWavelengths() ? double(s.wavelengthNm) : kWavelengthDNm;
   SampleStream random(s);
   const LensSystem::FlareTrace t =

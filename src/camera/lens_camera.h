@@ -34,6 +34,10 @@ struct LensCameraParams {
   std::optional<int> flareReflections;
   // With flare: the barrel's diffuse reflectance in [0, 1) (LensSystem::FlareOptions).
   double barrelReflectance = 0.0;
+  // The film's shift and tilt (lens_movements.h), the tilt about the point
+  // where the axis meets the film; focusMetres is then where the plane of
+  // focus crosses the axis.
+  LensMovements movements;
 };
 
 // The full element stack (Kolb et al. 1995): film point -> a point inside the
@@ -45,6 +49,13 @@ struct LensCameraParams {
 // cos(th_film) cos(th_plane) / d^2 dA = dz^2 / d^4 dA, estimated with the
 // bounds' pdf; the exposure uses the stopped-down lens's paraxial f-number
 // (the requested one with blades).
+//
+// Movements: the film points move (MovedFilm) and the rest follows: the
+// exit pupil bounds reach the largest radius the moved frame does, and a
+// tilted film's bounds hold for every depth its points take (each film
+// point's passing region depends on its depth too: ExitPupilBounds'
+// depth range), so the sampling stays unbiased; the integrand's cos at
+// the film is against the tilted normal.
 class LensCamera final : public Camera {
  public:
   // Stops the prescription down and focuses it (InputError when it cannot
@@ -78,6 +89,11 @@ class LensCamera final : public Camera {
   // from the sampling, for tests and tools.
   std::optional<Ray> traceThrough(const Vec2f& raster, const Vec2d& pupilPoint,
                                   double wavelengthNm = kWavelengthDNm) const;
+  // Where a ray leaving the lens toward the film (lens space) meets the
+  // film, as a raster position (possibly outside the image): the flare
+  // light pass's deposit.
+  Vec2d rasterOfFilmHit(const LensRay& towardFilm) const;
+  const LensMovements& movements() const { return params_.movements; }
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
@@ -96,6 +112,8 @@ class LensCamera final : public Camera {
   PupilRay pupilRay(const Vec3d& filmPoint, const std::optional<PupilSample>& pupil) const;
   // A raster position's point on the film (lens space, mm): the inverted real image.
   Vec3d filmPointMm(const Vec2f& raster) const;
+  // The irradiance integrand for a film point and a pupil-plane point.
+  double integrand(const Vec3d& filmPoint, const Vec3d& pupilPoint) const;
   // The exact trace, then the polygonal aperture when blades are set and
   // the mask's transmittance at the stop when there is one.
   std::optional<LensRay> traceLens(const LensRay& in, double wavelengthNm) const;
@@ -117,6 +135,7 @@ class LensCamera final : public Camera {
   double entrancePupilZ_ = 0.0;
   double scale_ = 0.0;  // exposure scale
   bool dispersion_ = false;
+  MovedFilm movedFilm_;
 };
 
 }  // namespace lensrt

@@ -9,18 +9,25 @@
 namespace lensrt {
 
 PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
-                             std::string lensName)
+                             std::string lensName, const LensMovements& movements)
     : Camera(worldFromCamera, film),
       yfov_(yfovRadians),
       tanHalfY_(std::tan(yfovRadians / 2)),
-      lensName_(std::move(lensName)) {
+      lensName_(std::move(lensName)),
+      movements_(movements) {
   if (!(yfovRadians > 0 && yfovRadians < kPi))
     throw std::invalid_argument("pinhole field of view must be between 0 and 180 degrees");
+  checkLensMovements(movements, film, "pinhole");
+  if (movements.tilted())
+    throw std::invalid_argument("pinhole: a tilt needs a lens's plane of focus (thin, thick or lens)");
+  // The film lies at d = 0.5 h / tan(yfov / 2) behind the pinhole.
+  shiftTan_ = movements.shiftMm * (2.0 * tanHalfY_ / film.sensorHeightMm);
 }
 
 PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
-                             const Exposure& exposure, double fNumber, std::string lensName)
-    : PinholeCamera(worldFromCamera, film, yfovRadians, std::move(lensName)) {
+                             const Exposure& exposure, double fNumber, std::string lensName,
+                             const LensMovements& movements)
+    : PinholeCamera(worldFromCamera, film, yfovRadians, std::move(lensName), movements) {
   onAxisWeight_ = exposureScale(exposure, fNumber) * idealIrradianceRatio(fNumber);
   exposure_ = exposure;
   fNumber_ = fNumber;
@@ -30,7 +37,7 @@ std::string PinholeCamera::describe() const {
   // The film is part of the description (the merge/resume identity): parts
   // recorded in radiance and in irradiance must not be joined.
   return "pinhole yfov=" + std::to_string(yfov_ * 180.0 / kPi) +
-         "deg film=" + (onAxisWeight_ ? "irradiance" : "radiance");
+         "deg film=" + (onAxisWeight_ ? "irradiance" : "radiance") + movements_.describe();
 }
 
 CameraInfo PinholeCamera::info() const {
@@ -40,6 +47,7 @@ CameraInfo PinholeCamera::info() const {
   i.focalLengthMm = 0.5 * film().sensorHeightMm / tanHalfY_;
   i.exposure = onAxisWeight_ ? lensrt::describe(exposure_) : "none";
   i.film = onAxisWeight_ ? "irradiance" : "radiance";
+  i.movements = movements_;
   return i;
 }
 
@@ -49,7 +57,11 @@ std::optional<CameraRay> PinholeCamera::generateCameraSpaceRay(const CameraSampl
   // Normalised device coordinates in [-1,1], y up.
   const double ndcX = 2.0 * s.film.x / f.width - 1.0;
   const double ndcY = 1.0 - 2.0 * s.film.y / f.height;
-  const double dx = ndcX * tanHalfY_ * aspect, dy = ndcY * tanHalfY_;
+  double dx = ndcX * tanHalfY_ * aspect, dy = ndcY * tanHalfY_;
+  if (movements_.shifted()) {
+    dx += shiftTan_.x;
+    dy += shiftTan_.y;
+  }
   float weight = 1.0f;
   if (onAxisWeight_) {
     const double cos2 = 1.0 / (1.0 + dx * dx + dy * dy);

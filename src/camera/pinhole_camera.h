@@ -15,19 +15,26 @@ namespace lensrt {
 // given an exposure, the pinhole records the irradiance of an ideal f/N lens
 // shrunk to a point, pi cos^4(theta) / (4 N^2) times the exposure scale (so
 // cos^4(theta) when normalized), like the other models.
+//
+// Movements: the shift alone (lens_movements.h): the frame slides across the
+// image plane at the focal distance the field of view implies,
+// 0.5 h / tan(yfov / 2). A pinhole has no plane of focus to tilt, so a tilt
+// throws std::invalid_argument.
 class PinholeCamera final : public Camera {
  public:
   // yfovRadians spans the film height; the horizontal field follows from the
   // film's aspect ratio (pixels are square on the sensor).
   PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
-                std::string lensName = {});
+                std::string lensName = {}, const LensMovements& movements = {});
   // fNumber only sets the physical exposure (a pinhole has no aperture to speak of).
   PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
-                const Exposure& exposure, double fNumber, std::string lensName = {});
+                const Exposure& exposure, double fNumber, std::string lensName = {},
+                const LensMovements& movements = {});
 
   std::string describe() const override;
   CameraInfo info() const override;
   double yfov() const { return yfov_; }
+  const LensMovements& movements() const { return movements_; }
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
@@ -39,6 +46,8 @@ class PinholeCamera final : public Camera {
   Exposure exposure_;
   double fNumber_ = 0.0;
   std::string lensName_;
+  LensMovements movements_;
+  Vec2d shiftTan_;  // the shift over the focal distance: added to the ray's x, y at z = -1
 };
 
 }  // namespace lensrt

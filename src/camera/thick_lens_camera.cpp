@@ -39,7 +39,8 @@ ThickLensCamera::ThickLensCamera(const Transform& worldFromCamera, const FilmGeo
     : Camera(worldFromCamera, film),
       params_(params),
       exposure_(exposure),
-      exitPupil_(params.exitPupilDiameter / 2.0, params.aperture) {
+      exitPupil_(params.exitPupilDiameter / 2.0, params.aperture),
+      movedFilm_(params.movements) {
   const double f = params.focalLengthMm;
   if (!(f > 0.0)) throw std::invalid_argument("thick lens: focal length must be positive");
   const double s = params.focusMetres * 1000.0;
@@ -56,6 +57,13 @@ ThickLensCamera::ThickLensCamera(const Transform& worldFromCamera, const FilmGeo
   onAxisWeight_ = exposureScale(exposure, params.fNumber) * exitPupil_.area() / (lxp * lxp);
   toRearPrincipal_ = (params.rearPrincipalZ - filmZ_) / (params.exitPupilZ - filmZ_);
   filmToExitPupil_ = lxp;
+  checkLensMovements(params.movements, film, "thick lens");
+  if (params.movements.tilted()) {
+    const double nearest = filmZ_ + movedFilm_.depthRange(film).min;
+    if (!(nearest > params.exitPupilZ && nearest > params.rearPrincipalZ))
+      throw std::invalid_argument(
+          "thick lens: the tilted film reaches the exit pupil or the rear principal plane");
+  }
 }
 
 std::string ThickLensCamera::describe() const {
@@ -63,22 +71,26 @@ std::string ThickLensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "thick lens f=%gmm t=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
                 params_.rearPrincipalZ - params_.frontPrincipalZ, params_.fNumber,
                 focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
-  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "");
+  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "") + params_.movements.describe();
 }
 
 CameraInfo ThickLensCamera::info() const {
-  return {"thick",
-          params_.lensName,
-          params_.fNumber,
-          params_.focusMetres,
-          params_.focalLengthMm,
-          lensrt::describe(exposure_),
-          params_.dispersion.has_value()};
+  CameraInfo i{"thick",
+               params_.lensName,
+               params_.fNumber,
+               params_.focusMetres,
+               params_.focalLengthMm,
+               lensrt::describe(exposure_),
+               params_.dispersion.has_value()};
+  i.movements = params_.movements;
+  return i;
 }
 
 std::optional<CameraRay> ThickLensCamera::generateCameraSpaceRay(const CameraSample& s) const {
+  if (params_.movements.tilted()) return tiltedRay(s);
   const ThickLensParams& P = params_;
-  const Vec2d up = uprightSensorPointMm(film(), s.film);
+  Vec2d up = uprightSensorPointMm(film(), s.film);
+  if (P.movements.shifted()) up = up + P.movements.shiftMm;
   const Vec3d p{-up.x, -up.y, filmZ_};  // the inverted real image
   const Vec2d e = exitPupil_.sample({s.lens.x, s.lens.y});
   const Vec3d q{e.x, e.y, P.exitPupilZ};
@@ -99,6 +111,32 @@ std::optional<CameraRay> ThickLensCamera::generateCameraSpaceRay(const CameraSam
   }
   const float weight = float(onAxisWeight_ * cos4ToAxis(up.x, up.y, filmToExitPupil_));
   const Vec3d o = Vec3d{origin.x, origin.y, origin.z - P.entrancePupilZ} * 1e-3;
+  return CameraRay{Ray{Vec3f(o), Vec3f(normalize(dir))}, weight};
+}
+
+std::optional<CameraRay> ThickLensCamera::tiltedRay(const CameraSample& s) const {
+  const ThickLensParams& P = params_;
+  const Vec3d p = Vec3d{0.0, 0.0, filmZ_} + movedFilm_.offset(uprightSensorPointMm(film(), s.film));
+  const Vec2d e = exitPupil_.sample({s.lens.x, s.lens.y});
+  const Vec3d q{e.x, e.y, P.exitPupilZ};
+  // Where the image-side ray crosses H' (this film point's own fraction);
+  // it leaves H at the same height toward p's conjugate, at
+  // 1/u = 1/f - 1/v in front of H for p's distance v behind H' (beyond
+  // infinity when negative): per unit of depth -p/v through the nodal
+  // points and -a/u from the height a.
+  const Vec3d a = p + (q - p) * ((P.rearPrincipalZ - p.z) / (q.z - p.z));
+  const double v = p.z - P.rearPrincipalZ;
+  const double f = P.dispersion ? P.focalLengthMm * P.dispersion->at(s.wavelengthNm) : P.focalLengthMm;
+  const double invU = 1.0 / f - 1.0 / v;
+  const Vec3d dir{-p.x / v - a.x * invU, -p.y / v - a.y * invU, -1.0};
+  // The chief ray toward the exit pupil's centre: cos against the film's
+  // normal and the axis over the distance squared, relative to the untilted
+  // centre's L_xp^2 / L_xp^4 that onAxisWeight_ holds.
+  const Vec3d toPupil = Vec3d{0.0, 0.0, P.exitPupilZ} - p;
+  const double d2 = lengthSquared(toPupil);
+  const double cosFilmCosPupil = dot(movedFilm_.normal(), toPupil) * -toPupil.z / (d2 * d2);
+  const float weight = float(onAxisWeight_ * filmToExitPupil_ * filmToExitPupil_ * cosFilmCosPupil);
+  const Vec3d o = Vec3d{a.x, a.y, P.frontPrincipalZ - P.entrancePupilZ} * 1e-3;
   return CameraRay{Ray{Vec3f(o), Vec3f(normalize(dir))}, weight};
 }
 

@@ -26,6 +26,10 @@ struct ThickLensParams {
   // times this ratio at its wavelength, principal planes and pupils kept
   // (axial colour). None: every wavelength alike.
   std::optional<FocalLengthRatio> dispersion;
+  // The film's shift and tilt (lens_movements.h), the tilt about the point
+  // where the axis meets the film; focusMetres is then where the plane of
+  // focus crosses the axis.
+  LensMovements movements;
 };
 
 // Cardinal points and pupils of a lens's paraxial data, at f-number `fNumber`
@@ -49,6 +53,12 @@ double lensVerticalFov(const ParaxialData& p, double focusMetres, double sensorH
 //
 // Radiometry as the thin lens's, with the exit pupil: E/L = A_xp cos^4 / L_xp^2,
 // L_xp the film to exit pupil distance, which is pi / (4 N^2) at infinity.
+//
+// Movements: each film point of a tilted film images its own conjugate
+// plane (its distance from H' sets it), so the plane of focus is the
+// Scheimpflug plane exactly, its hinge line at f / sin(tilt) from H in the
+// plane through H parallel to the film; the weight's cos at the film is
+// against the tilted normal (chief ray toward the exit pupil's centre).
 class ThickLensCamera final : public Camera {
  public:
   ThickLensCamera(const Transform& worldFromCamera, const FilmGeometry& film, const ThickLensParams& params,
@@ -67,6 +77,9 @@ class ThickLensCamera final : public Camera {
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
 
  private:
+  // generateCameraSpaceRay on the tilted film.
+  std::optional<CameraRay> tiltedRay(const CameraSample& sample) const;
+
   ThickLensParams params_;
   Exposure exposure_;
   Aperture exitPupil_;
@@ -75,6 +88,7 @@ class ThickLensCamera final : public Camera {
   // Per camera, not per ray: where along film -> exit pupil the ray crosses
   // H' (a fraction), and the film's distance to the exit pupil.
   double toRearPrincipal_ = 0.0, filmToExitPupil_ = 0.0;
+  MovedFilm movedFilm_;
 };
 
 }  // namespace lensrt

@@ -18,12 +18,16 @@ ThinLensCamera::ThinLensCamera(const Transform& worldFromCamera, const FilmGeome
     : Camera(worldFromCamera, film),
       params_(params),
       exposure_(exposure),
-      aperture_(params.focalLengthMm / (2.0 * params.fNumber), params.aperture) {
+      aperture_(params.focalLengthMm / (2.0 * params.fNumber), params.aperture),
+      movedFilm_(params.movements) {
   if (!(params.focalLengthMm > 0.0)) throw std::invalid_argument("thin lens: focal length must be positive");
   focusMm_ = params.focusMetres * 1000.0;
   if (!(focusMm_ > params.focalLengthMm))
     throw std::invalid_argument("thin lens: cannot focus closer than the focal length");
   v_ = thinLensImageDistance(params.focalLengthMm, focusMm_);
+  checkLensMovements(params.movements, film, "thin lens");
+  if (params.movements.tilted() && !(v_ + movedFilm_.depthRange(film).min > 0.0))
+    throw std::invalid_argument("thin lens: the tilted film reaches the lens");
   onAxisWeight_ = exposureScale(exposure, params.fNumber) * aperture_.area() / (v_ * v_);
 }
 
@@ -32,21 +36,25 @@ std::string ThinLensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "thin lens f=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
                 params_.fNumber, focusText(params_.focusMetres).c_str(),
                 lensrt::describe(params_.aperture).c_str());
-  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "");
+  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "") + params_.movements.describe();
 }
 
 CameraInfo ThinLensCamera::info() const {
-  return {"thin",
-          params_.lensName,
-          params_.fNumber,
-          params_.focusMetres,
-          params_.focalLengthMm,
-          lensrt::describe(exposure_),
-          params_.dispersion.has_value()};
+  CameraInfo i{"thin",
+               params_.lensName,
+               params_.fNumber,
+               params_.focusMetres,
+               params_.focalLengthMm,
+               lensrt::describe(exposure_),
+               params_.dispersion.has_value()};
+  i.movements = params_.movements;
+  return i;
 }
 
 std::optional<CameraRay> ThinLensCamera::generateCameraSpaceRay(const CameraSample& s) const {
-  const Vec2d up = uprightSensorPointMm(film(), s.film);
+  if (params_.movements.tilted()) return tiltedRay(s);
+  Vec2d up = uprightSensorPointMm(film(), s.film);
+  if (params_.movements.shifted()) up = up + params_.movements.shiftMm;
   // The chief ray through the lens centre leaves along (x, y, -v) (upright
   // sensor coordinates: the physical film point is (-x, -y, +v)).
   const Vec2d q = aperture_.sample({s.lens.x, s.lens.y});
@@ -64,6 +72,26 @@ std::optional<CameraRay> ThinLensCamera::generateCameraSpaceRay(const CameraSamp
     dir = Vec3d{up.x * k - q.x, up.y * k - q.y, -focusMm_};
   }
   const float weight = float(onAxisWeight_ * cos4ToAxis(up.x, up.y, v_));
+  return CameraRay{Ray{{float(q.x * 1e-3), float(q.y * 1e-3), 0.0f}, Vec3f(normalize(dir))}, weight};
+}
+
+std::optional<CameraRay> ThinLensCamera::tiltedRay(const CameraSample& s) const {
+  // The physical film point (mm, +z behind the lens).
+  const Vec3d p = Vec3d{0.0, 0.0, v_} + movedFilm_.offset(uprightSensorPointMm(film(), s.film));
+  const Vec2d q = aperture_.sample({s.lens.x, s.lens.y});
+  // Toward p's conjugate, at 1/s = 1/f - 1/z in front (beyond infinity when
+  // negative): through the centre undeviated, so per unit of depth the ray
+  // moves by -p/z and by -q/s from where it left the lens.
+  const double f = params_.dispersion ? params_.focalLengthMm * params_.dispersion->at(s.wavelengthNm)
+                                      : params_.focalLengthMm;
+  const double invS = 1.0 / f - 1.0 / p.z;
+  const Vec3d dir{-p.x / p.z - q.x * invS, -p.y / p.z - q.y * invS, -1.0};
+  // The chief ray from p to the lens centre: cos against the film's normal
+  // and the lens's axis, over the distance squared, relative to the
+  // untilted centre's v^2 / v^4 that onAxisWeight_ holds.
+  const double d2 = lengthSquared(p);
+  const double cosFilmCosLens = dot(movedFilm_.normal(), -p) * p.z / (d2 * d2);
+  const float weight = float(onAxisWeight_ * v_ * v_ * cosFilmCosLens);
   return CameraRay{Ray{{float(q.x * 1e-3), float(q.y * 1e-3), 0.0f}, Vec3f(normalize(dir))}, weight};
 }
 

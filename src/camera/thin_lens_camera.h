@@ -19,6 +19,9 @@ struct ThinLensParams {
   // focalLengthMm times this ratio at its wavelength (axial colour only: a
   // thin lens has no lateral colour). None: every wavelength alike.
   std::optional<FocalLengthRatio> dispersion;
+  // The film's shift and tilt (lens_movements.h); focusMetres is then where
+  // the plane of focus crosses the optical axis.
+  LensMovements movements;
 };
 
 // An ideal thin lens at the camera origin: every point of the focus plane
@@ -29,6 +32,12 @@ struct ThinLensParams {
 // does, so E/L = A cos^4(theta) / v^2 with theta the chief ray's angle at the
 // film: pi cos^4(theta) / (4 N^2) focused at infinity (the seed's formula,
 // exactly). Each sample carries that value (uniform aperture sampling).
+//
+// Movements: a film point off the unmoved film's plane (tilt) images its
+// own conjugate plane, 1/s = 1/f - 1/z at its distance z behind the lens,
+// so the conjugates of the tilted film form the Scheimpflug plane exactly;
+// the weight's cos at the film is then against the tilted normal:
+// E/L = A cos(th_film) cos(th_lens) / d^2 along the chief ray.
 class ThinLensCamera final : public Camera {
  public:
   // Throws std::invalid_argument for f <= 0, N <= 0 or a focus at or inside f.
@@ -46,12 +55,16 @@ class ThinLensCamera final : public Camera {
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
 
  private:
+  // generateCameraSpaceRay on the tilted film.
+  std::optional<CameraRay> tiltedRay(const CameraSample& sample) const;
+
   ThinLensParams params_;
   Exposure exposure_;
   Aperture aperture_;
   double v_ = 0.0;             // image distance, mm
   double focusMm_ = 0.0;       // infinity allowed
   double onAxisWeight_ = 0.0;  // exposure scale * A / v^2
+  MovedFilm movedFilm_;
 };
 
 // Image distance (mm) of an ideal lens of focal length f focused at s (mm, infinity allowed).

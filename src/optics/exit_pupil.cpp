@@ -158,30 +158,42 @@ class NodeSolver {
 
 }  // namespace
 
-ExitPupilBounds::ExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius, int intervals)
+ExitPupilBounds::ExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius, int intervals,
+                                 FilmDepthRange depth)
     : planeZ_(lens.rearZ()), filmZ_(filmZ), maxFilmRadius_(maxFilmRadius) {
-  if (!(filmZ > planeZ_))
+  if (!(depth.min <= depth.max) || !std::isfinite(depth.min) || !std::isfinite(depth.max))
+    throw std::invalid_argument("ExitPupilBounds: bad film depth range");
+  if (!(filmZ + depth.min > planeZ_))
     throw std::invalid_argument("ExitPupilBounds: the film must lie behind the rear vertex");
   if (!(maxFilmRadius > 0.0) || intervals < 1)
     throw std::invalid_argument("ExitPupilBounds: bad film extent");
   // Nodes at every interval end and middle; each interval's polygon is the
   // hull of its three nodes' boundaries, so it also covers radii in between.
+  // A film slab adds depth nodes, at most 1 mm apart (ends included), whose
+  // boundaries join the hull the same way: the passing region moves little
+  // and smoothly with the film point's depth, and a hull of convex regions
+  // holds every blend of them.
   const int nodes = 2 * intervals + 1;
-  std::vector<std::vector<Vec2d>> boundaries(nodes);
-  const NodeSolver solver(lens, planeZ_, filmZ_);
+  const double slab = depth.max - depth.min;
+  const int depths = slab > 0.0 ? std::max(3, 1 + static_cast<int>(std::ceil(slab / 1.0))) : 1;
+  std::vector<NodeSolver> solvers;
+  for (int j = 0; j < depths; ++j)
+    solvers.emplace_back(lens, planeZ_, depths == 1 ? filmZ_ : filmZ_ + depth.min + slab * j / (depths - 1));
+  std::vector<std::vector<Vec2d>> boundaries(std::size_t(nodes) * depths);
   const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
   {
+    const int jobs = nodes * depths;
     std::vector<std::jthread> pool;
     for (unsigned t = 0; t < threads; ++t)
       pool.emplace_back([&, t] {
-        for (int k = static_cast<int>(t); k < nodes; k += static_cast<int>(threads))
-          boundaries[k] = solver.boundary(maxFilmRadius * k / (nodes - 1));
+        for (int k = static_cast<int>(t); k < jobs; k += static_cast<int>(threads))
+          boundaries[k] = solvers[k % depths].boundary(maxFilmRadius * (k / depths) / (nodes - 1));
       });
   }
   polygons_.resize(intervals);
   for (int i = 0; i < intervals; ++i) {
     std::vector<Vec2d> pts;
-    for (int k = 2 * i; k <= 2 * i + 2; ++k)
+    for (int k = 2 * i * depths; k < (2 * i + 3) * depths; ++k)
       pts.insert(pts.end(), boundaries[k].begin(), boundaries[k].end());
     std::vector<Vec2d> hull = convexHull(pts);
     if (hull.size() < 3) continue;

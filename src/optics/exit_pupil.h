@@ -26,11 +26,22 @@ struct PupilSample {
   double pdf = 0.0;  // per unit area (1/mm^2) on that plane
 };
 
+// Film points off the plane z = filmZ (a tilted film): their z lies in
+// [filmZ + min, filmZ + max] (mm).
+struct FilmDepthRange {
+  double min = 0.0, max = 0.0;
+};
+
 class ExitPupilBounds {
  public:
   // filmZ: the film plane (lens.rearZ() + film distance). maxFilmRadius: the
-  // largest film radius to support, e.g. half the sensor diagonal.
-  ExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius, int intervals = 64);
+  // largest film radius to support, e.g. half the sensor diagonal. With a
+  // depth range, each interval's polygon holds the nodes' boundaries at
+  // depths across it too (every 1 mm or closer, ends included): bounds for
+  // any film point in that slab, as the radius nodes cover the radii between
+  // them. Sampling, pdf and polygon() then take only the point's x and y.
+  ExitPupilBounds(const LensSystem& lens, double filmZ, double maxFilmRadius, int intervals = 64,
+                  FilmDepthRange depth = {});
 
   double planeZ() const { return planeZ_; }
   double filmZ() const { return filmZ_; }

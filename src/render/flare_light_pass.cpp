@@ -10,7 +10,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include "camera/film_mapping.h"
 #include "core/constants.h"
 #include "core/frame.h"
 #include "core/ray.h"
@@ -456,10 +455,7 @@ FlareImage flareLightPass(const LensCamera& camera, std::span<const PunctualLigh
         if (t.end != LensSystem::FlareTrace::End::Film) continue;
         // The direct image of an emitter or the sun is the camera paths'.
         if (source.reflectedOnly && t.reflections == 0) continue;
-        const double s = (camera.filmZ() - t.ray.origin.z) / t.ray.direction.z;
-        const Vec2d upright{-(t.ray.origin.x + s * t.ray.direction.x),
-                            -(t.ray.origin.y + s * t.ray.direction.y)};
-        const Vec2d raster = rasterOfUprightSensorPointMm(film, upright);
+        const Vec2d raster = camera.rasterOfFilmHit(t.ray);  // on the film, shifted or tilted as it is
         if (!(raster.x >= 0.0 && raster.y >= 0.0 && raster.x < film.width && raster.y < film.height))
           continue;
         if (!visible(shadow)) continue;
