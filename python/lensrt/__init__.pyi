@@ -110,6 +110,8 @@ class Scene:
         dispersion: str | bool = "on",
         coatings: str | None = None,
         film: str | None = None,
+        shift: tuple[float, float] | float | str = "0,0",
+        tilt: tuple[float, float] | float | str = 0,
         shutter: float | str = 0.01,
         shutter_curve: str = "box",
         rolling_shutter: float | str = 0,

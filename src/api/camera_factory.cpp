@@ -168,16 +168,22 @@ std::unique_ptr<Camera> buildCamera(const CameraRequest& request, const CameraDe
                                                       film.width, film.height));
       pixel = {pixel.x + 0.5, pixel.y + 0.5};
     }
-    const PinholeCamera aim(worldFromCamera, film, yfovInfinity);
+    // The film's shift moves what the pixel sees (the tilt only what is sharp).
+    LensMovements shift;
+    shift.shiftMm = o.movements.shiftMm;
+    const PinholeCamera aim(worldFromCamera, film, yfovInfinity, {}, shift);
     CameraSample s;
     s.film = {float(pixel.x), float(pixel.y)};
     const auto ray = aim.generateRay(s);
     const std::optional<double> hit = hitDistance && ray ? hitDistance(ray->ray) : std::nullopt;
     if (hit && *hit > 0.0 && std::isfinite(*hit)) {
       // The pinhole ray's direction in camera space has z = -1: axial distance = t cos.
+      const double perMm = std::tan(0.5 * yfovInfinity) / (0.5 * film.sensorHeightMm);
       const double tanX =
-          (2.0 * pixel.x / film.width - 1.0) * std::tan(0.5 * yfovInfinity) * film.width / film.height;
-      const double tanY = (1.0 - 2.0 * pixel.y / film.height) * std::tan(0.5 * yfovInfinity);
+          (2.0 * pixel.x / film.width - 1.0) * std::tan(0.5 * yfovInfinity) * film.width / film.height +
+          shift.shiftMm.x * perMm;
+      const double tanY =
+          (1.0 - 2.0 * pixel.y / film.height) * std::tan(0.5 * yfovInfinity) + shift.shiftMm.y * perMm;
       focus = *hit / std::sqrt(1.0 + tanX * tanX + tanY * tanY);
     } else {
       warnings.warn("--focus auto: the focus pixel sees no surface; focusing at infinity");
@@ -200,9 +206,11 @@ std::unique_ptr<Camera> buildCamera(const CameraRequest& request, const CameraDe
 
   // What the camera models still reject is about the lens (makeCamera names
   // it) or the glTF camera (RenderJob names the scene).
+  if (const std::optional<std::string> problem = lensMovementsProblem(o.movements, film))
+    throw UsageError(problem->find("tilt") != std::string::npos ? "--tilt" : "--shift", *problem);
   const CameraBuild build{o,        request.flare,          worldFromCamera, film,     exposure,     lens,
                           paraxial, keyedFNumber,           fNumber,         focalMm,  yfovInfinity, focusM,
-                          aperture, lens ? lens->name : "", warnings,        flareLens};
+                          aperture, lens ? lens->name : "", o.movements,     warnings, flareLens};
   return cameraModel(o.model).create(build);
 }
 

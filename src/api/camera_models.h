@@ -38,7 +38,8 @@ struct CameraBuild {
   double yfovInfinity = 0;  // radians, focused at infinity
   double focusMetres = 0;   // infinity allowed
   ApertureShape aperture;
-  std::string lensName;  // empty without a lens
+  std::string lensName;     // empty without a lens
+  LensMovements movements;  // checked against the film
   Warnings& warnings;
   const LensCamera** flareLens;  // set to a full lens that makes stray light; may be null
 };

@@ -9,6 +9,7 @@
 
 #include "api/keyframes.h"
 #include "camera/exposure.h"
+#include "camera/lens_movements.h"
 #include "core/vec.h"
 #include "optics/coating.h"
 
@@ -42,6 +43,7 @@ struct CameraSpec {
   bool dispersion = true;                            // trace each sample at its wavelength
   std::optional<Coating> coatings;                   // none: lossless glass
   std::optional<FilmQuantity> film;                  // none: the model's default
+  LensMovements movements;  // the film's shift and tilt (camera/lens_movements.h)
   std::filesystem::path lensDir = defaultLensDir();  // the lens library
 
   bool autoFocus() const { return !focusMetres && focusKeys.empty(); }

@@ -20,6 +20,7 @@ CameraModelInfo fullLensModel() {
             p.focusMetres = b.focusMetres;
             p.aperture = b.aperture;
             p.dispersion = o.dispersion;
+            p.movements = b.movements;
             p.coatings = o.coatings;
             if (b.flare.on) {
               p.flareReflections = b.flare.bounces;

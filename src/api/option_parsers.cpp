@@ -132,7 +132,10 @@ std::string numberText(double v) {
 
 std::string keyframesText(const Keyframes& keys) {
   std::string s;
-  for (const auto& [t, v] : keys) s += (s.empty() ? "" : ",") + numberText(t) + ":" + numberText(v);
+  for (const auto& [t, v] : keys) {
+    if (!s.empty()) s += ',';
+    s.append(numberText(t)).append(":").append(numberText(v));
+  }
   return s;
 }
 

@@ -87,10 +87,6 @@ Option text(Option o, Get get) {
   return o;
 }
 
-Option& forCommands(Option& o, unsigned commands) {
-  o.commands = commands;
-  return o;
-}
 
 bool notPinhole(const RenderSpec& s) {
   return s.camera.model != CameraModel::Pinhole;
@@ -314,6 +310,58 @@ std::vector<Option> makeTable() {
         std::move(o), [](auto& s) -> auto& { return s.camera.film; },
         std::vector<std::pair<std::string, std::optional<FilmQuantity>>>{
             {"radiance", FilmQuantity::Radiance}, {"irradiance", FilmQuantity::Irradiance}}));
+  }
+
+  {
+    Option o = row("--shift", "shift", "X,Y",
+                   "lens movements: the film slides X,Y mm in its plane (x right, y up as the picture is "
+                   "seen), so the frame's centre shows what the unshifted film showed at X,Y: --shift 0,8 "
+                   "is a rising front that keeps a building's verticals parallel; at most the sensor's width "
+                   "and height (default 0,0)",
+                   "0,8", PyValue::Pair);
+    o.set = [](RenderSpec& s, const std::string& text) {
+      const std::optional<Vec2d> p = parseNumberPair(text, ',');
+      if (!p) throw UsageError("--shift", "expected X,Y in mm (e.g. 0,8), got '" + text + "'");
+      s.camera.movements.shiftMm = *p;
+    };
+    o.show = [](const RenderSpec& s) {
+      return numberText(s.camera.movements.shiftMm.x) + "," + numberText(s.camera.movements.shiftMm.y);
+    };
+    add(std::move(o));
+  }
+  {
+    Option o = row("--tilt", "tilt", "DEG[,AXIS]",
+                   "lens movements: the film tilts DEG degrees against the lens about a line through the "
+                   "axis at AXIS degrees from the picture's horizontal (0: a tilt, 90: a swing), and the "
+                   "plane of sharp focus turns by the Scheimpflug rule about the hinge line f / sin(DEG) "
+                   "from the lens; positive DEG swings it down toward the ground, e.g. --tilt 4 "
+                   "(|DEG| <= 30; default 0)",
+                   "4", PyValue::Pair);
+    o.set = [](RenderSpec& s, const std::string& text) {
+      double tilt = 0, axis = 0;
+      if (const std::optional<Vec2d> p = parseNumberPair(text, ',')) {
+        tilt = p->x, axis = p->y;
+      } else {
+        tilt = parseNumberIn("--tilt", text, -kMaxTiltDegrees, kMaxTiltDegrees, "degrees");
+      }
+      if (!(std::abs(tilt) <= kMaxTiltDegrees) || !(std::abs(axis) <= kMaxTiltAxisDegrees))
+        throw UsageError("--tilt",
+                         fmt::format("expected DEG[,AXIS] in degrees with |DEG| <= {:g} and |AXIS| <= "
+                                     "{:g}, got '{}'",
+                                     kMaxTiltDegrees, kMaxTiltAxisDegrees, text));
+      s.camera.movements.tiltDegrees = tilt;
+      s.camera.movements.tiltAxisDegrees = axis;
+    };
+    o.show = [](const RenderSpec& s) {
+      const LensMovements& m = s.camera.movements;
+      return m.tiltAxisDegrees != 0 ? numberText(m.tiltDegrees) + "," + numberText(m.tiltAxisDegrees)
+                                    : numberText(m.tiltDegrees);
+    };
+    o.applies = notPinhole;
+    o.usedBy =
+        "does nothing with the pinhole (it has no plane of focus to tilt): it applies to --camera thin, "
+        "thick or lens";
+    add(std::move(o));
   }
 
   // --- The shutter (api/shutter_spec.h).
@@ -710,7 +758,10 @@ std::vector<Option> makeTable() {
       for (const auto& [on, name] :
            {std::pair{s.aovs.depth, "depth"}, std::pair{s.aovs.normal, "normal"},
             std::pair{s.aovs.albedo, "albedo"}, std::pair{s.aovs.variance, "variance"}})
-        if (on) names += (names.empty() ? "" : ",") + std::string(name);
+        if (on) {
+          if (!names.empty()) names += ',';
+          names += name;
+        }
       return names;
     };
     add(std::move(o));
@@ -936,7 +987,9 @@ std::string optionsIdentity(const RenderSpec& spec) {
     if (o.identity != Identity::Image) continue;
     const std::string value = o.show(spec);
     const std::string name = o.keyword.empty() ? o.flag.substr(2) : o.keyword;
-    if (value != o.show(defaults)) s += (s.empty() ? "" : " ") + name + "=" + value;
+    if (value == o.show(defaults)) continue;
+    if (!s.empty()) s += ' ';
+    s.append(name).append("=").append(value);
   }
   return s;
 }

@@ -10,13 +10,16 @@ namespace lensrt {
 CameraModelInfo pinholeModel() {
   return {CameraModel::Pinhole, "pinhole", "an ideal pinhole: no depth of field", false,
           [](const CameraBuild& b) -> std::unique_ptr<Camera> {
+            // A pinhole has no plane of focus to tilt: its film only shifts.
+            LensMovements shift;
+            shift.shiftMm = b.movements.shiftMm;
             const double yfov = b.paraxial
                                     ? lensVerticalFov(*b.paraxial, b.focusMetres, b.film.sensorHeightMm)
                                     : b.yfovInfinity;
             if (b.spec.film == FilmQuantity::Irradiance)
               return std::make_unique<PinholeCamera>(b.worldFromCamera, b.film, yfov, b.exposure, b.fNumber,
-                                                     b.lensName);
-            return std::make_unique<PinholeCamera>(b.worldFromCamera, b.film, yfov, b.lensName);
+                                                     b.lensName, shift);
+            return std::make_unique<PinholeCamera>(b.worldFromCamera, b.film, yfov, b.lensName, shift);
           }};
 }
 

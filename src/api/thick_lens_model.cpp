@@ -17,6 +17,7 @@ CameraModelInfo thickLensModel() {
             ThickLensParams p = thickLensFromParaxial(*b.paraxial, b.fNumber, b.focusMetres);
             p.aperture = b.aperture;
             p.lensName = b.lensName;
+            p.movements = b.movements;
             if (b.spec.dispersion && hasDispersion(*b.lens)) p.dispersion.emplace(*b.lens);
             return std::make_unique<ThickLensCamera>(b.worldFromCamera, b.film, p, b.exposure);
           }};

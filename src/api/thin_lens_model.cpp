@@ -15,6 +15,7 @@ CameraModelInfo thinLensModel() {
             p.focusMetres = b.focusMetres;
             p.aperture = b.aperture;
             p.lensName = b.lensName;
+            p.movements = b.movements;
             if (b.lens && b.spec.dispersion && hasDispersion(*b.lens)) p.dispersion.emplace(*b.lens);
             return std::make_unique<ThinLensCamera>(b.worldFromCamera, b.film, p, b.exposure);
           }};
