@@ -13,10 +13,10 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <vector>
 
+#include "api/standalone_camera.h"
 #include "camera/film_mapping.h"
 #include "core/constants.h"
 #include "core/error.h"
-#include "scene/scene_desc.h"
 
 namespace lensrt {
 namespace {
@@ -32,28 +32,12 @@ struct Sample {
   double u = 0.0, v = 0.0;
 };
 
-struct BuiltCamera {
-  std::unique_ptr<Camera> camera;
-  double focusMetres = kInfinity;
-};
-
-BuiltCamera buildCamera(const CalibrationRequest& r, Warnings& warnings) {
-  if (r.width < 2 || r.height < 2 || r.width > 65536 || r.height > 65536)
-    throw UsageError("--res",
-                     fmt::format("expected 2x2 to 65536x65536 pixels, got {}x{}", r.width, r.height));
-  const std::optional<double> focus = parseFocus(r.camera.focus);
-  if (!focus)
-    throw UsageError(
-        "--focus",
-        "calibration needs a distance in metres or inf: 'auto' measures a scene, and there is none");
+StandaloneCamera buildCamera(const CalibrationRequest& r, Warnings& warnings) {
   if (!(r.wavelengthNm >= 360.0 && r.wavelengthNm <= 830.0))
     throw UsageError("--wavelength", fmt::format("expected 360 to 830 nm, got {:g}", r.wavelengthNm));
   if (!(r.maxResidualPx > 0.0))
     throw UsageError("--max-residual", fmt::format("expected pixels > 0, got {:g}", r.maxResidualPx));
-  FilmGeometry film;
-  film.width = r.width;
-  film.height = r.height;
-  return {makeCamera(r.camera, CameraDesc{}, film, {}, warnings), *focus};
+  return makeStandaloneCamera(r.camera, r.width, r.height, Transform(), warnings);
 }
 
 // The normalised point (X / Z, Y / Z) of OpenCV's frame (X = x, Y = -y,
@@ -140,7 +124,7 @@ std::pair<double, double> linearFit(const std::vector<double>& a, const std::vec
 }  // namespace
 
 Calibration fitLens(const CalibrationRequest& request, Warnings& warnings) {
-  const BuiltCamera built = buildCamera(request, warnings);
+  const StandaloneCamera built = buildCamera(request, warnings);
   const Camera& camera = *built.camera;
   Calibration c;
   c.request = request;
@@ -316,7 +300,7 @@ nlohmann::json calibrationJson(const Calibration& c) {
 }
 
 Image stMap(const Calibration& c, bool undistort, Warnings& warnings) {
-  const BuiltCamera built = buildCamera(c.request, warnings);
+  const StandaloneCamera built = buildCamera(c.request, warnings);
   const Camera& camera = *built.camera;
   const OpenCvCamera& m = c.camera;
   const int w = c.request.width, h = c.request.height;
