@@ -130,12 +130,14 @@ def covering_poses(project, outline, distance, tilt_deg):
 
 
 def calibrate_renders(tmp_path, render, project, distance, square, tilt_deg, fisheye):
-    """Render the board at the covering poses, find its corners and calibrate."""
+    """Render the board at the covering poses, find its corners and calibrate.
+    Also returns how far the corners OpenCV found lie from where project()
+    puts them (RMS, pixels): the render against the projection, directly."""
     corners = write_board(tmp_path / "board.gltf", square * distance)
     scene = lensrt.Scene(tmp_path / "board.gltf")
     s = square * distance
     outline = np.array([[x * (COLS / 2 + 1) * s, y * (ROWS / 2 + 1) * s, 0.0] for x in (-1, 1) for y in (-1, 1)])
-    objects, images = [], []
+    objects, images, misses = [], [], []
     for pose in covering_poses(project, outline, distance, tilt_deg):
         rgb = render(scene, pose).rgb.mean(axis=2)
         blurred = cv2.GaussianBlur(rgb, (0, 0), BLUR_PX)
@@ -146,6 +148,14 @@ def calibrate_renders(tmp_path, render, project, distance, square, tilt_deg, fis
         c = cv2.cornerSubPix(grey, c, (5, 5), (-1, -1), (cv2.TERM_CRITERIA_EPS + cv2.TERM_CRITERIA_MAX_ITER, 100, 1e-4))
         objects.append(corners.reshape(-1, 1, 3))
         images.append(c)
+        # OpenCV's pixel centres are at integers, the raster's at + 0.5; the
+        # board's rows and columns may be found in either direction.
+        homogeneous = np.c_[corners, np.ones(len(corners))]
+        expected, _ = project((np.linalg.inv(pose) @ homogeneous.T).T[:, :3])
+        grid = expected.reshape(ROWS - 1, COLS - 1, 2)
+        found_raster = c.reshape(-1, 2) + 0.5
+        misses.append(min((np.linalg.norm(found_raster - e.reshape(-1, 2), axis=1) ** 2).mean()
+                          for e in (grid, grid[::-1], grid[:, ::-1], grid[::-1, ::-1])))
     if fisheye:
         rms, K, D, _, _ = cv2.fisheye.calibrate(
             objects, images, RES, np.zeros((3, 3)), np.zeros((4, 1)),
@@ -153,7 +163,7 @@ def calibrate_renders(tmp_path, render, project, distance, square, tilt_deg, fis
             criteria=(cv2.TERM_CRITERIA_COUNT + cv2.TERM_CRITERIA_EPS, 200, 1e-12))
     else:
         rms, K, D, _, _ = cv2.calibrateCamera(objects, images, RES, None, None, flags=cv2.CALIB_FIX_K3)
-    return rms, K, D.ravel()
+    return rms, K, D.ravel(), math.sqrt(np.mean(misses))
 
 
 CASES = [  # lens, sensor, focus and board distance (m), board square / distance, tilt
@@ -177,11 +187,14 @@ def test_opencv_recovers_lensrts_calibration(tmp_path, lens_name, sensor, distan
         p = lens.project(points, None, **keywords)
         return p.pixels, p.visible
 
-    rms, K, k = calibrate_renders(tmp_path, render, project, distance, square, tilt, fisheye)
+    rms, K, k, miss = calibrate_renders(tmp_path, render, project, distance, square, tilt, fisheye)
     fit = lens.calibrate(model="fisheye" if fisheye else "opencv4", **keywords)
     print(f"{lens_name}: OpenCV rms {rms:.4f} px, fx {K[0, 0]:.3f} fy {K[1, 1]:.3f} k1 {k[0]:.5f}; "
-          f"lensrt fx {fit['fx']:.3f} k1 {fit['k1']:.5f} (fit residual max {fit['residual_px']['max']:.4f} px)")
+          f"lensrt fx {fit['fx']:.3f} k1 {fit['k1']:.5f} (fit residual max {fit['residual_px']['max']:.4f} px); "
+          f"found corners from Lens.project: RMS {miss:.4f} px")
     assert rms <= 0.15
+    # The corners found in the renders are where Lens.project puts them.
+    assert miss <= 0.15
     assert K[0, 0] == pytest.approx(fit["fx"], rel=0.005)
     assert K[1, 1] == pytest.approx(fit["fy"], rel=0.005)
     near_zero = abs(fit["k1"]) < 0.02
@@ -202,8 +215,9 @@ def test_pinhole_control(tmp_path):
             px = np.c_[RES[0] / 2 + f_px * points[:, 0] / z, RES[1] / 2 - f_px * points[:, 1] / z]
         return px, (z > 0) & (px[:, 0] >= 0) & (px[:, 0] <= RES[0]) & (px[:, 1] >= 0) & (px[:, 1] <= RES[1])
 
-    rms, K, k = calibrate_renders(tmp_path, render, project, 1.5, 0.027, 35, False)
-    print(f"pinhole: OpenCV rms {rms:.4f} px, fx {K[0, 0]:.3f} fy {K[1, 1]:.3f} (f / pitch {f_px:.3f}) k1 {k[0]:.5f}")
+    rms, K, k, miss = calibrate_renders(tmp_path, render, project, 1.5, 0.027, 35, False)
+    print(f"pinhole: OpenCV rms {rms:.4f} px, fx {K[0, 0]:.3f} fy {K[1, 1]:.3f} (f / pitch {f_px:.3f}) k1 {k[0]:.5f}; "
+          f"found corners from the closed form: RMS {miss:.4f} px")
     assert rms <= 0.15
     assert abs(k[0]) <= 0.002
     assert K[0, 0] == pytest.approx(f_px, rel=0.002)
