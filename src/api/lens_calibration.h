@@ -23,7 +23,7 @@
 #include <optional>
 #include <string>
 
-#include "api/camera_options.h"
+#include "api/camera_spec.h"
 #include "camera/opencv_model.h"
 #include "core/warnings.h"
 #include "image/image.h"
@@ -31,10 +31,10 @@
 namespace lensrt {
 
 struct CalibrationRequest {
-  // The camera as a render makes it: model ("lens" by default), lens,
-  // --fstop, --focus (metres or inf: not auto), --sensor, as CameraOptions
-  // take them; dispersion as the render's default (on).
-  CameraOptions camera;
+  // The camera as a render makes it (api/camera_spec.h): model, lens, the
+  // f-number, the focus (metres or infinity: not auto), the sensor;
+  // dispersion as the render's default (on).
+  CameraSpec camera;
   int width = 0, height = 0;  // raster, pixels
   OpenCvModel model = OpenCvModel::OpenCv;
   double wavelengthNm = 587.5618;  // the d line

@@ -10,8 +10,10 @@
 #include <iostream>
 #include <memory>
 
+#include "api/camera_models.h"
 #include "api/lens_calibration.h"
 #include "api/lens_view.h"
+#include "api/option_parsers.h"
 #include "api/output_file.h"
 #include "api/render_options.h"
 #include "api/text_file.h"
@@ -50,11 +52,12 @@ void checkTextOutput(const std::string& file) {
 
 int runCalibrate(const CalibrateOptions& o) {
   CalibrationRequest request;
-  request.camera.model = o.camera;
+  for (const CameraModelInfo& m : cameraModels())
+    if (m.name == o.camera) request.camera.model = m.model;
   request.camera.lens = o.lens;
   request.camera.lensDir = LENSRT_LENS_DIR;
-  request.camera.sensor = o.sensor;
-  request.camera.focus = o.focus;
+  request.camera.sensorMm = parseSensor(o.sensor);
+  request.camera.focusMetres = parseFocusDistance(o.focus);
   request.camera.fNumber = o.fNumber;
   const Resolution res = parseResolution(o.res);
   if (res.height == 0) throw UsageError("--res", "expected WIDTHxHEIGHT in pixels, e.g. 640x360");

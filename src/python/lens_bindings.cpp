@@ -13,11 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "api/camera_models.h"
 #include "api/lens_calibration.h"
 #include "api/lens_ghosts.h"
 #include "api/lens_info.h"
 #include "api/lens_loading.h"
 #include "api/lens_view.h"
+#include "api/option_parsers.h"
 #include "api/render_options.h"
 #include "api/standalone_camera.h"
 #include "core/constants.h"
@@ -125,14 +127,18 @@ class PyLens {
   }
 
   // The camera a render with these keywords makes (Scene.render's names).
-  CameraOptions cameraOptions(py::handle camera, py::handle sensor, py::handle focus,
-                              py::handle fstop) const {
-    CameraOptions o;
+  CameraSpec cameraOptions(py::handle camera, py::handle sensor, py::handle focus, py::handle fstop) const {
+    CameraSpec o;
     o.lensDir = LENSRT_LENS_DIR;
     o.lens = lens_.label;
-    o.model = toText(camera, "camera");
-    o.sensor = toSensorText(sensor, "sensor");
-    o.focus = toDistanceText(focus, "focus");
+    const std::string model = toText(camera, "camera");
+    bool known = false;
+    for (const CameraModelInfo& m : cameraModels())
+      if (m.name == model) o.model = m.model, known = true;
+    if (!known)
+      throw py::value_error("camera: expected 'lens', 'thick', 'thin' or 'pinhole', got '" + model + "'");
+    o.sensorMm = parseSensor(toSensorText(sensor, "sensor"));
+    o.focusMetres = parseFocusDistance(toDistanceText(focus, "focus"));
     o.fNumber = toOptionalDouble(fstop, "fstop");
     return o;
   }
