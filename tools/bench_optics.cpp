@@ -2,7 +2,8 @@
 // exit pupil bounds construction time (target < 0.2 s on 2 cores for an
 // 11-surface lens), their efficiency (share of sampled rays that pass;
 // target >= 90% for dgauss-50mm at f/2 over 36x24 mm, pbrt-v4's boxes ~72%),
-// and exact tracing throughput.
+// exact tracing throughput, and the chief-ray projection's cost (what the
+// flow AOV pays per sample): its table, a point projected, a film point's ray.
 //   bench_optics [lens names...]   (default: the whole library)
 #include <algorithm>
 #include <chrono>
@@ -14,6 +15,7 @@
 
 #include "core/constants.h"
 #include "core/warnings.h"
+#include "optics/chief_ray.h"
 #include "optics/exit_pupil.h"
 #include "optics/focus.h"
 #include "optics/lens_readers.h"
@@ -80,6 +82,32 @@ void bench(const lensrt::LensPrescription& design, double fNumber) {
       design.name.c_str(), lens.paraxial().fNumber, lens.surfaceCount(), 1e3 * times[2], 1e3 * cpuTimes[2],
       100.0 * eff.efficiency(), 100.0 * boxPassed / std::max(1L, boxSampled), eff.empty, 1e9 * traceS / n,
       100.0 * passed / n);
+
+  // The projection: points spread over the field 3 m away, film points over the frame.
+  const std::clock_t t0 = std::clock();
+  const lensrt::ChiefRays chief(lens, lens.rearZ() + film);
+  const double tableS = static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC;
+  const int points = 200000;
+  const double reach = 3000.0 * std::tan(lensrt::kPi / 180.0 * 0.9 * chief.tableFieldDeg());
+  double sink = 0.0;
+  const std::clock_t p0 = std::clock();
+  for (int i = 0; i < points; ++i) {
+    const double r = reach * std::sqrt(rng.uniform()), phi = 2.0 * lensrt::kPi * rng.uniform();
+    const lensrt::ChiefRayImage image = chief.ofPoint({r * std::cos(phi), r * std::sin(phi), -3000.0});
+    sink += image.status == lensrt::ChiefRayStatus::Passes ? image.film.x : 0.0;
+  }
+  const double projectS = static_cast<double>(std::clock() - p0) / CLOCKS_PER_SEC;
+  const std::clock_t u0 = std::clock();
+  for (int i = 0; i < points; ++i) {
+    const lensrt::ChiefRayToScene ray =
+        chief.ofFilmPoint({(rng.uniform() - 0.5) * 36, (rng.uniform() - 0.5) * 24});
+    sink += ray.status == lensrt::ChiefRayStatus::Passes ? ray.ray.direction.x : 0.0;
+  }
+  const double unprojectS = static_cast<double>(std::clock() - u0) / CLOCKS_PER_SEC;
+  std::printf(
+      "%-24s chief rays: table %.2f ms (to %.1f deg), project %.0f ns/point, unproject %.0f ns/point CPU%s\n",
+      "", 1e3 * tableS, chief.tableFieldDeg(), 1e9 * projectS / points, 1e9 * unprojectS / points,
+      sink == 12345.0 ? " " : "");
 }
 
 }  // namespace

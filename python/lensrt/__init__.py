@@ -17,6 +17,15 @@ TraceResult = _namedtuple("TraceResult", ["points", "directions", "weights", "pa
 TraceResult.__doc__ = """Lens.trace's result: exit points (N x 3, mm), unit directions (N x 3),
 transmitted fractions (N) and which rays passed (N, bool)."""
 
+Projection = _namedtuple("Projection", ["pixels", "visible", "status"])
+Projection.__doc__ = """Lens.project's result: raster positions (N x 2, pixels from the top-left
+corner), which lie inside the frame (N, bool), and the reason (N, uint8): 0
+visible, 1 outside the frame, 2 blocked by the lens, 3 behind the camera."""
+
+Unprojection = _namedtuple("Unprojection", ["origins", "directions", "visible", "status"])
+Unprojection.__doc__ = """Lens.unproject's result: the chief rays' origins (N x 3, metres) and unit
+directions (N x 3), world space, and visible and status as Projection's."""
+
 from ._lensrt import Lens, RenderResult, Scene, __version__, diff  # noqa: E402
 
-__all__ = ["Lens", "Scene", "RenderResult", "TraceResult", "diff", "__version__"]
+__all__ = ["Lens", "Scene", "RenderResult", "TraceResult", "Projection", "Unprojection", "diff", "__version__"]

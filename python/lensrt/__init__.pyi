@@ -19,6 +19,17 @@ class TraceResult(NamedTuple):
     weights: npt.NDArray[np.float64]  # N, transmitted fraction
     passed: npt.NDArray[np.bool_]  # N
 
+class Projection(NamedTuple):
+    pixels: npt.NDArray[np.float64]  # N x 2, raster: (0, 0) the top-left corner, y down
+    visible: npt.NDArray[np.bool_]  # N
+    status: npt.NDArray[np.uint8]  # N: 0 visible, 1 outside the frame, 2 blocked, 3 behind
+
+class Unprojection(NamedTuple):
+    origins: npt.NDArray[np.float64]  # N x 3, metres
+    directions: npt.NDArray[np.float64]  # N x 3, unit, toward the scene
+    visible: npt.NDArray[np.bool_]  # N
+    status: npt.NDArray[np.uint8]  # N
+
 class Lens:
     def __init__(self, lens: _Path) -> None: ...
     @property
@@ -60,6 +71,42 @@ class Lens:
         self, fstop: float | None = None, focus: _Distance = "inf", sensor: _Sensor = "36x24", points: int = 41
     ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
     def ghosts(self, coatings: str = "none") -> dict[str, Any]: ...
+    def project(
+        self,
+        world_points: npt.ArrayLike,
+        camera_to_world: npt.ArrayLike | None,
+        *,
+        res: str | tuple[int, int],
+        focus: _Distance,
+        sensor: _Sensor = "full-frame",
+        fstop: float | None = None,
+        wavelength_nm: float = 587.5618,
+        camera: str = "lens",
+    ) -> Projection: ...
+    def unproject(
+        self,
+        pixels: npt.ArrayLike,
+        camera_to_world: npt.ArrayLike | None = None,
+        *,
+        res: str | tuple[int, int],
+        focus: _Distance,
+        sensor: _Sensor = "full-frame",
+        fstop: float | None = None,
+        wavelength_nm: float = 587.5618,
+        camera: str = "lens",
+    ) -> Unprojection: ...
+    def calibrate(
+        self,
+        *,
+        res: str | tuple[int, int],
+        focus: _Distance,
+        sensor: _Sensor = "full-frame",
+        fstop: float | None = None,
+        model: str = "opencv",
+        wavelength_nm: float = 587.5618,
+        camera: str = "lens",
+        max_residual: float = 1.0,
+    ) -> dict[str, Any]: ...
 
 class RenderResult:
     @property

@@ -21,5 +21,7 @@ CommandAction addLensDiagramCommand(CLI::App& lens, const CommandContext& contex
 CommandAction addLensPlotCommand(CLI::App& lens, const CommandContext& context);
 // lens_ghosts_command.cpp: `lens ghosts LENS [--coatings X] [--json]`.
 CommandAction addLensGhostsCommand(CLI::App& lens, const CommandContext& context);
+// lens_calibrate_command.cpp: `lens calibrate LENS --res WxH --focus M|inf [--model ...] [--json]`.
+CommandAction addLensCalibrateCommand(CLI::App& lens, const CommandContext& context);
 
 }  // namespace lensrt

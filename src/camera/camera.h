@@ -11,6 +11,7 @@
 #include <string>
 
 #include "camera/lens_movements.h"
+#include "camera/projection.h"
 #include "core/ray.h"
 #include "core/transform.h"
 #include "core/vec.h"
@@ -79,7 +80,9 @@ inline std::string focusText(double metres) {
 class Camera {
  public:
   Camera(const Transform& worldFromCamera, const FilmGeometry& film)
-      : worldFromCamera_(worldFromCamera), film_(film) {}
+      : worldFromCamera_(worldFromCamera),
+        cameraFromWorld_(worldFromCamera.invertible() ? worldFromCamera.inverse() : Transform()),
+        film_(film) {}
   virtual ~Camera() = default;
   Camera(const Camera&) = delete;
   Camera& operator=(const Camera&) = delete;
@@ -115,6 +118,24 @@ class Camera {
   const Transform& worldFromCamera() const { return worldFromCamera_; }
   const FilmGeometry& film() const { return film_; }
 
+  // Not yet for a moved film: the projection ignores LensMovements (--shift, --tilt).
+  // The projection (camera/projection.h): where a camera-space point (metres)
+  // images in raster pixels at a wavelength (nm), and the ray a raster
+  // position sees, in camera space. Thread-safe and deterministic.
+  virtual ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const = 0;
+  virtual ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const = 0;
+  // The same in world space, through this camera's pose (a moving camera's
+  // caller applies the pose of the moment to projectCameraPoint instead).
+  ProjectedPoint project(const Vec3d& worldPoint, double wavelengthNm) const {
+    return projectCameraPoint(cameraFromWorld_.point(worldPoint), wavelengthNm);
+  }
+  ProjectedRay unproject(const Vec2d& raster, double wavelengthNm) const {
+    ProjectedRay r = unprojectRaster(raster, wavelengthNm);
+    r.origin = worldFromCamera_.point(r.origin);
+    r.direction = normalize(worldFromCamera_.vector(r.direction));
+    return r;
+  }
+
  protected:
   // Ray in camera space (origin in metres, any direction length).
   virtual std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const = 0;
@@ -126,6 +147,7 @@ class Camera {
 
  private:
   Transform worldFromCamera_;
+  Transform cameraFromWorld_;  // identity when the pose is singular (it then renders nothing sensible either)
   FilmGeometry film_;
 };
 

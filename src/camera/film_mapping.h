@@ -18,9 +18,22 @@ inline Vec2d uprightSensorPointMm(const FilmGeometry& f, const Vec2f& raster) {
           (0.5 - double(raster.y) / f.height) * f.sensorHeightMm};
 }
 
+// The same for a raster position in double precision (the projections').
+inline Vec2d uprightSensorPointOfRaster(const FilmGeometry& f, const Vec2d& raster) {
+  return {(raster.x / f.width - 0.5) * f.sensorWidthMm, (0.5 - raster.y / f.height) * f.sensorHeightMm};
+}
+
 // The raster position of an upright sensor point: the inverse of the above.
 inline Vec2d rasterOfUprightSensorPointMm(const FilmGeometry& f, const Vec2d& mm) {
   return {(mm.x / f.sensorWidthMm + 0.5) * f.width, (0.5 - mm.y / f.sensorHeightMm) * f.height};
+}
+
+// A projected position's place in the frame (camera/projection.h): inside
+// [0, W] x [0, H] or not.
+inline Visibility frameVisibility(const FilmGeometry& f, const Vec2d& raster) {
+  return raster.x >= 0.0 && raster.x <= f.width && raster.y >= 0.0 && raster.y <= f.height
+             ? Visibility::Visible
+             : Visibility::OutsideFrame;
 }
 
 inline double sensorHalfDiagonalMm(const FilmGeometry& f) {

@@ -36,6 +36,7 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
   stopRadius_ = lens_->prescription().surfaces[p.stopIndex].apertureDiameter / 2.0;
   if (params.aperture.blades) polygon_.emplace(stopRadius_ / widen, params.aperture);
   filmZ_ = lens_->rearZ() + focusFilmDistance(*lens_, params.focusMetres * 1000.0);
+  chiefRays_ = std::make_unique<const ChiefRays>(*lens_, filmZ_);
   if (!params.movements.any()) {
     bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, sensorHalfDiagonalMm(film) * (1.0 + 1e-6),
                                                 params.pupilIntervals);
@@ -288,6 +289,31 @@ void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
       lens_->traceFromFilm(std::span(rays).first(n), std::span(traced).first(n));
     for (std::size_t i = 0; i < n; ++i) out[first + i] = cameraRay(traced[i], weights[i]);
   }
+}
+
+// The chief ray through the stop's centre (optics/chief_ray.h), traced at
+// the wavelength when the camera traces each sample at its own (else the
+// d line, as the render's rays are).
+ProjectedPoint LensCamera::projectCameraPoint(const Vec3d& p, double wavelengthNm) const {
+  const double wavelength = dispersion_ ? wavelengthNm : kWavelengthDNm;
+  const ChiefRayImage image =
+      chiefRays_->ofPoint({p.x * 1e3, p.y * 1e3, p.z * 1e3 + entrancePupilZ_}, wavelength);
+  if (image.status == ChiefRayStatus::Behind) return {image.film, Visibility::Behind};
+  // The upright image is the film point's negative.
+  const Vec2d raster = rasterOfUprightSensorPointMm(film(), image.film * -1.0);
+  if (image.status == ChiefRayStatus::Blocked) return {raster, Visibility::Blocked};
+  return {raster, frameVisibility(film(), raster)};
+}
+
+ProjectedRay LensCamera::unprojectRaster(const Vec2d& raster, double wavelengthNm) const {
+  const double wavelength = dispersion_ ? wavelengthNm : kWavelengthDNm;
+  const ChiefRayToScene out =
+      chiefRays_->ofFilmPoint(uprightSensorPointOfRaster(film(), raster) * -1.0, wavelength);
+  const Vec3d origin{out.ray.origin.x * 1e-3, out.ray.origin.y * 1e-3,
+                     (out.ray.origin.z - entrancePupilZ_) * 1e-3};
+  const Visibility visibility =
+      out.status == ChiefRayStatus::Passes ? frameVisibility(film(), raster) : Visibility::Blocked;
+  return {origin, out.ray.direction, visibility};
 }
 
 }  // namespace lensrt

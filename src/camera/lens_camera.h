@@ -7,6 +7,7 @@
 #include "camera/camera.h"
 #include "camera/exposure.h"
 #include "core/warnings.h"
+#include "optics/chief_ray.h"
 #include "optics/exit_pupil.h"
 #include "optics/lens_system.h"
 
@@ -83,6 +84,8 @@ class LensCamera final : public Camera {
   double filmZ() const { return filmZ_; }
   // Camera space origin (the entrance pupil) in lens space z, mm.
   double entrancePupilZ() const { return entrancePupilZ_; }
+  ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const override;
+  ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const override;
   // The camera-space ray from a raster position through a point of the
   // rear-vertex plane (lens space x, y in mm), traced at `wavelengthNm`;
   // nullopt when the lens blocks it. The geometry behind generateRay, apart
@@ -127,9 +130,10 @@ class LensCamera final : public Camera {
   Exposure exposure_;
   std::unique_ptr<LensSystem> lens_;
   std::unique_ptr<ExitPupilBounds> bounds_;
-  std::optional<Aperture> polygon_;        // in the stop plane, when blades are set
-  LensSystem::FlareOptions flareOptions_;  // with flare: the limit, the barrel, the stop's shape
-  double stopRadius_ = 0.0;                // of the stopped-down stop (mm): the mask's scale
+  std::unique_ptr<const ChiefRays> chiefRays_;  // the projection's
+  std::optional<Aperture> polygon_;             // in the stop plane, when blades are set
+  LensSystem::FlareOptions flareOptions_;       // with flare: the limit, the barrel, the stop's shape
+  double stopRadius_ = 0.0;                     // of the stopped-down stop (mm): the mask's scale
   double fNumber_ = 0.0;
   double filmZ_ = 0.0;
   double entrancePupilZ_ = 0.0;

@@ -2,9 +2,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
+#include "camera/film_mapping.h"
+
 namespace lensrt {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
 
 OrthographicCamera::OrthographicCamera(const Transform& worldFromCamera, const FilmGeometry& film,
                                        double ymag)
@@ -35,6 +42,20 @@ std::optional<CameraRay> OrthographicCamera::generateCameraSpaceRay(const Camera
   const double ndcY = 1.0 - 2.0 * s.film.y / f.height;
   return CameraRay{Ray{{float(ndcX * halfWidth_), float(ndcY * halfHeight_), 0.0f}, {0.0f, 0.0f, -1.0f}},
                    1.0f};
+}
+
+// Parallel projection along -Z: x and y scale to the frame.
+ProjectedPoint OrthographicCamera::projectCameraPoint(const Vec3d& p, double) const {
+  if (!(p.z < 0.0) || !isFinite(p)) return {{kNaN, kNaN}, Visibility::Behind};
+  const FilmGeometry& f = film();
+  const Vec2d raster{(p.x / halfWidth_ + 1.0) * 0.5 * f.width, (1.0 - p.y / halfHeight_) * 0.5 * f.height};
+  return {raster, frameVisibility(f, raster)};
+}
+
+ProjectedRay OrthographicCamera::unprojectRaster(const Vec2d& raster, double) const {
+  const FilmGeometry& f = film();
+  const double ndcX = 2.0 * raster.x / f.width - 1.0, ndcY = 1.0 - 2.0 * raster.y / f.height;
+  return {{ndcX * halfWidth_, ndcY * halfHeight_, 0.0}, {0.0, 0.0, -1.0}, frameVisibility(f, raster)};
 }
 
 }  // namespace lensrt

@@ -22,6 +22,8 @@ class OrthographicCamera final : public Camera {
   CameraInfo info() const override;
   double halfWidth() const { return halfWidth_; }
   double halfHeight() const { return halfHeight_; }
+  ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const override;
+  ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const override;
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;

@@ -1,12 +1,18 @@
 #include "camera/pinhole_camera.h"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
+#include "camera/film_mapping.h"
 #include "core/constants.h"
 
 namespace lensrt {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
 
 PinholeCamera::PinholeCamera(const Transform& worldFromCamera, const FilmGeometry& film, double yfovRadians,
                              std::string lensName, const LensMovements& movements)
@@ -68,6 +74,25 @@ std::optional<CameraRay> PinholeCamera::generateCameraSpaceRay(const CameraSampl
     weight = float(*onAxisWeight_ * cos2 * cos2);
   }
   return CameraRay{Ray{{0, 0, 0}, {float(dx), float(dy), -1.0f}}, weight};
+}
+
+// Through the pinhole: the tangents of the point's angles, scaled to the frame.
+ProjectedPoint PinholeCamera::projectCameraPoint(const Vec3d& p, double) const {
+  if (!(p.z < 0.0) || !isFinite(p)) return {{kNaN, kNaN}, Visibility::Behind};
+  const FilmGeometry& f = film();
+  const double aspect = double(f.width) / f.height;
+  const double ndcX = p.x / -p.z / (tanHalfY_ * aspect), ndcY = p.y / -p.z / tanHalfY_;
+  const Vec2d raster{(ndcX + 1.0) * 0.5 * f.width, (1.0 - ndcY) * 0.5 * f.height};
+  return {raster, frameVisibility(f, raster)};
+}
+
+ProjectedRay PinholeCamera::unprojectRaster(const Vec2d& raster, double) const {
+  const FilmGeometry& f = film();
+  const double aspect = double(f.width) / f.height;
+  const double ndcX = 2.0 * raster.x / f.width - 1.0, ndcY = 1.0 - 2.0 * raster.y / f.height;
+  return {{0.0, 0.0, 0.0},
+          normalize(Vec3d{ndcX * tanHalfY_ * aspect, ndcY * tanHalfY_, -1.0}),
+          frameVisibility(f, raster)};
 }
 
 }  // namespace lensrt

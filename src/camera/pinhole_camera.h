@@ -35,6 +35,8 @@ class PinholeCamera final : public Camera {
   CameraInfo info() const override;
   double yfov() const { return yfov_; }
   const LensMovements& movements() const { return movements_; }
+  ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const override;
+  ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const override;
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;

@@ -2,12 +2,17 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "camera/film_mapping.h"
 #include "camera/thin_lens_camera.h"
 
 namespace lensrt {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
 
 ThickLensParams thickLensFromParaxial(const ParaxialData& p, double fNumber, double focusMetres) {
   ThickLensParams t;
@@ -138,6 +143,33 @@ std::optional<CameraRay> ThickLensCamera::tiltedRay(const CameraSample& s) const
   const float weight = float(onAxisWeight_ * filmToExitPupil_ * filmToExitPupil_ * cosFilmCosPupil);
   const Vec3d o = Vec3d{a.x, a.y, P.frontPrincipalZ - P.entrancePupilZ} * 1e-3;
   return CameraRay{Ray{Vec3f(o), Vec3f(normalize(dir))}, weight};
+}
+
+// The chief ray enters toward the entrance pupil's centre E (the camera
+// origin) with slope t = dx/dz, crosses H at height a = t (z_H - z_E),
+// leaves H' at that height with slope t - a / f (the paraxial refraction)
+// and meets the film D = z_film - z_H' behind: at K t, where
+// K = (z_H - z_E) + D (1 - (z_H - z_E) / f). Every point of the line
+// through E images there; the thin lens is the case z_H = z_H' = z_E, K = v.
+double ThickLensCamera::chiefRayScale(double wavelengthNm) const {
+  const ThickLensParams& P = params_;
+  const double f = P.focalLengthMm * (P.dispersion ? P.dispersion->at(wavelengthNm) : 1.0);
+  const double toH = P.frontPrincipalZ - P.entrancePupilZ, d = filmZ_ - P.rearPrincipalZ;
+  return toH + d * (1.0 - toH / f);
+}
+
+ProjectedPoint ThickLensCamera::projectCameraPoint(const Vec3d& p, double wavelengthNm) const {
+  if (!(p.z < 0.0) || !isFinite(p)) return {{kNaN, kNaN}, Visibility::Behind};
+  // t = p.xy / p.z; the upright image is the film point's negative.
+  const Vec2d raster =
+      rasterOfUprightSensorPointMm(film(), Vec2d{p.x, p.y} * (chiefRayScale(wavelengthNm) / -p.z));
+  return {raster, frameVisibility(film(), raster)};
+}
+
+ProjectedRay ThickLensCamera::unprojectRaster(const Vec2d& raster, double wavelengthNm) const {
+  const Vec2d up = uprightSensorPointOfRaster(film(), raster);
+  const double k = chiefRayScale(wavelengthNm);
+  return {{0.0, 0.0, 0.0}, normalize(Vec3d{up.x / k, up.y / k, -1.0}), frameVisibility(film(), raster)};
 }
 
 }  // namespace lensrt

@@ -72,6 +72,8 @@ class ThickLensCamera final : public Camera {
   // Object distance from H and image distance from H' (mm) of the focus plane.
   double objectDistanceFromH() const { return u_; }
   double imageDistance() const { return v_; }
+  ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const override;
+  ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const override;
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;
@@ -83,6 +85,9 @@ class ThickLensCamera final : public Camera {
   ThickLensParams params_;
   Exposure exposure_;
   Aperture exitPupil_;
+  // K of the chief ray's image, film = K t (projectCameraPoint), at a wavelength.
+  double chiefRayScale(double wavelengthNm) const;
+
   double u_ = 0.0, v_ = 0.0, filmZ_ = 0.0;
   double onAxisWeight_ = 0.0;
   // Per camera, not per ray: where along film -> exit pupil the ray crosses

@@ -2,11 +2,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "camera/film_mapping.h"
 
 namespace lensrt {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
 
 double thinLensImageDistance(double f, double s) {
   if (std::isinf(s)) return f;
@@ -93,6 +98,19 @@ std::optional<CameraRay> ThinLensCamera::tiltedRay(const CameraSample& s) const 
   const double cosFilmCosLens = dot(movedFilm_.normal(), -p) * p.z / (d2 * d2);
   const float weight = float(onAxisWeight_ * v_ * v_ * cosFilmCosLens);
   return CameraRay{Ray{{float(q.x * 1e-3), float(q.y * 1e-3), 0.0f}, Vec3f(normalize(dir))}, weight};
+}
+
+// The chief ray passes the lens's centre undeviated, at every wavelength
+// (the thin lens has no lateral colour), to the film at v.
+ProjectedPoint ThinLensCamera::projectCameraPoint(const Vec3d& p, double) const {
+  if (!(p.z < 0.0) || !isFinite(p)) return {{kNaN, kNaN}, Visibility::Behind};
+  const Vec2d raster = rasterOfUprightSensorPointMm(film(), Vec2d{p.x, p.y} * (v_ / -p.z));
+  return {raster, frameVisibility(film(), raster)};
+}
+
+ProjectedRay ThinLensCamera::unprojectRaster(const Vec2d& raster, double) const {
+  const Vec2d up = uprightSensorPointOfRaster(film(), raster);
+  return {{0.0, 0.0, 0.0}, normalize(Vec3d{up.x, up.y, -v_}), frameVisibility(film(), raster)};
 }
 
 }  // namespace lensrt

@@ -50,6 +50,8 @@ class ThinLensCamera final : public Camera {
   const ThinLensParams& params() const { return params_; }
   double imageDistanceMm() const { return v_; }
   const Aperture& aperture() const { return aperture_; }
+  ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const override;
+  ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const override;
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const override;

@@ -71,6 +71,20 @@ LensSystem::LensSystem(LensPrescription prescription, std::optional<Coating> coa
   }
 }
 
+LensSystem LensSystem::withOpenRims() const {
+  LensSystem open = *this;
+  for (std::size_t i = 0; i < open.surfaces_.size(); ++i) {
+    TraceSurface& s = open.surfaces_[i];
+    if (s.asphere) continue;
+    // The step keeps to the cap around the vertex by itself; a sphere's
+    // hits lie within |R| of the axis.
+    s.apertureRadius = s.radius == 0.0 ? kMaxLengthMm : std::abs(s.radius);
+    s.apertureRadius2 = s.apertureRadius * s.apertureRadius;
+    open.spheres_[i].apertureRadius2 = s.apertureRadius2;
+  }
+  return open;
+}
+
 // An even asphere: the exact hit by optics/asphere.h, the normal from the
 // sag's derivative. Out of line: it is the rare case, and the spherical step
 // below stays as it was (bit for bit).

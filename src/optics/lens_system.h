@@ -50,6 +50,13 @@ class LensSystem {
   double rearZ() const { return surfaces_.back().z; }
   double rearApertureRadius() const { return surfaces_.back().apertureRadius; }
   double frontApertureRadius() const { return surfaces_.front().apertureRadius; }
+  // The same lens with every clear aperture opened as far as its surface
+  // goes (a sphere to its hemisphere, a flat surface and the stop without
+  // limit; an asphere keeps its own, where its sag is defined): no ray is
+  // blocked but by missing a surface or total internal reflection. For
+  // solving for a ray the rims may block (the chief ray of a vignetted
+  // field, optics/chief_ray.h), then testing it in the real lens.
+  LensSystem withOpenRims() const;
 
   // A ray leaving a film point toward the scene (direction.z < 0). Returns the
   // ray leaving the front surface into the scene, or nullopt when an aperture,

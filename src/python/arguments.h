@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "core/transform.h"
+
 namespace lensrt::python {
 
 namespace py = pybind11;
@@ -35,5 +37,9 @@ std::vector<std::string> toTextList(py::handle value, const char* name);
 // when the input is not one already); `rows` -1 for any N.
 py::array_t<double, py::array::c_style> toFiniteMatrix(py::handle value, const char* name,
                                                        py::ssize_t columns, py::ssize_t rows = -1);
+
+// camera_to_world: a rigid 4 x 4 pose (its 3 x 3 part a rotation within
+// 1e-4, float32 poses pass; last row 0 0 0 1), glTF's camera convention.
+Transform toPose(py::handle value);
 
 }  // namespace lensrt::python

@@ -13,10 +13,15 @@
 #include <string>
 #include <vector>
 
+#include "api/camera_models.h"
+#include "api/lens_calibration.h"
 #include "api/lens_ghosts.h"
 #include "api/lens_info.h"
 #include "api/lens_loading.h"
 #include "api/lens_view.h"
+#include "api/option_parsers.h"
+#include "api/render_options.h"
+#include "api/standalone_camera.h"
 #include "core/constants.h"
 #include "optics/coating.h"
 #include "optics/distortion.h"
@@ -39,6 +44,37 @@ std::optional<Coating> toCoating(py::handle value) {
   const std::optional<Coating> coating = parseCoating(name);
   if (!coating) throw py::value_error("coatings: expected 'none', 'single' or 'multi', got '" + name + "'");
   return coating;
+}
+
+// res: "WxH" or (width, height) in pixels.
+std::pair<int, int> toRasterSize(py::handle value) {
+  if (py::isinstance<py::str>(value)) {
+    const Resolution r = parseResolution(value.cast<std::string>());
+    if (r.height == 0) badArgument("res", "'WxH' or (width, height) in pixels", value);
+    return {r.width, r.height};
+  }
+  if (py::isinstance<py::sequence>(value) && py::len(value) == 2) {
+    const py::sequence s = py::reinterpret_borrow<py::sequence>(value);
+    return {int(toInteger(s[0], "res", 2, 65536)), int(toInteger(s[1], "res", 2, 65536))};
+  }
+  badArgument("res", "'WxH' or (width, height) in pixels", value);
+}
+
+double toWavelength(py::handle value) {
+  const double wavelength = toDouble(value, "wavelength_nm");
+  if (!(wavelength >= 360.0 && wavelength <= 830.0))
+    throw py::value_error(fmt::format("wavelength_nm: expected 360 to 830 nm, got {:g}", wavelength));
+  return wavelength;
+}
+
+// Rows [0, n) in chunks on every core, without the GIL.
+template <class F>
+void forRows(py::ssize_t n, F&& f) {
+  const py::gil_scoped_release release;
+  constexpr py::ssize_t kChunk = 1024;
+  tbb::parallel_for(py::ssize_t(0), (n + kChunk - 1) / kChunk, [&](py::ssize_t chunk) {
+    for (py::ssize_t i = chunk * kChunk; i < std::min(n, (chunk + 1) * kChunk); ++i) f(i);
+  });
 }
 
 class PyLens {
@@ -86,6 +122,105 @@ class PyLens {
       const LensInfo info = lensInfo(lens_.prescription, settings, warnings.sink());
       return lensInfoJson(info, warnings.messages());
     });
+    warnings.emit();
+    return toPython(json);
+  }
+
+  // The camera a render with these keywords makes (Scene.render's names).
+  CameraSpec cameraOptions(py::handle camera, py::handle sensor, py::handle focus, py::handle fstop) const {
+    CameraSpec o;
+    o.lensDir = LENSRT_LENS_DIR;
+    o.lens = lens_.label;
+    const std::string model = toText(camera, "camera");
+    bool known = false;
+    for (const CameraModelInfo& m : cameraModels())
+      if (m.name == model) o.model = m.model, known = true;
+    if (!known)
+      throw py::value_error("camera: expected 'lens', 'thick', 'thin' or 'pinhole', got '" + model + "'");
+    o.sensorMm = parseSensor(toSensorText(sensor, "sensor"));
+    o.focusMetres = parseFocusDistance(toDistanceText(focus, "focus"));
+    o.fNumber = toOptionalDouble(fstop, "fstop");
+    return o;
+  }
+
+  StandaloneCamera projection(py::handle pose, py::handle res, py::handle focus, py::handle sensor,
+                              py::handle fstop, py::handle camera) const {
+    const Transform worldFromCamera = pose.is_none() ? Transform() : toPose(pose);
+    const auto [width, height] = toRasterSize(res);
+    WarningList warnings;
+    StandaloneCamera c = makeStandaloneCamera(cameraOptions(camera, sensor, focus, fstop), width, height,
+                                              worldFromCamera, warnings.sink());
+    warnings.emit();
+    return c;
+  }
+
+  py::object project(py::handle pointsIn, py::handle pose, py::handle res, py::handle focus,
+                     py::handle sensor, py::handle fstop, py::handle wavelengthIn, py::handle camera) const {
+    const auto points = toFiniteMatrix(pointsIn, "world_points", 3);
+    const double wavelength = toWavelength(wavelengthIn);
+    const StandaloneCamera c = projection(pose, res, focus, sensor, fstop, camera);
+    const py::ssize_t n = points.shape(0);
+    py::array_t<double> pixels({n, py::ssize_t(2)});
+    py::array_t<bool> visible(n);
+    py::array_t<std::uint8_t> status(n);
+    const double* p = points.data();
+    double* px = pixels.mutable_data();
+    bool* v = visible.mutable_data();
+    std::uint8_t* s = status.mutable_data();
+    forRows(n, [&](py::ssize_t i) {
+      const ProjectedPoint q = c.camera->project({p[3 * i], p[3 * i + 1], p[3 * i + 2]}, wavelength);
+      px[2 * i] = q.raster.x, px[2 * i + 1] = q.raster.y;
+      v[i] = q.visibility == Visibility::Visible;
+      s[i] = std::uint8_t(q.visibility);
+    });
+    return py::module_::import("lensrt").attr("Projection")(pixels, visible, status);
+  }
+
+  py::object unproject(py::handle pixelsIn, py::handle pose, py::handle res, py::handle focus,
+                       py::handle sensor, py::handle fstop, py::handle wavelengthIn,
+                       py::handle camera) const {
+    const auto pixels = toFiniteMatrix(pixelsIn, "pixels", 2);
+    const double wavelength = toWavelength(wavelengthIn);
+    const StandaloneCamera c = projection(pose, res, focus, sensor, fstop, camera);
+    const py::ssize_t n = pixels.shape(0);
+    py::array_t<double> origins({n, py::ssize_t(3)}), directions({n, py::ssize_t(3)});
+    py::array_t<bool> visible(n);
+    py::array_t<std::uint8_t> status(n);
+    const double* p = pixels.data();
+    double* o = origins.mutable_data();
+    double* d = directions.mutable_data();
+    bool* v = visible.mutable_data();
+    std::uint8_t* s = status.mutable_data();
+    forRows(n, [&](py::ssize_t i) {
+      const ProjectedRay r = c.camera->unproject({p[2 * i], p[2 * i + 1]}, wavelength);
+      o[3 * i] = r.origin.x, o[3 * i + 1] = r.origin.y, o[3 * i + 2] = r.origin.z;
+      d[3 * i] = r.direction.x, d[3 * i + 1] = r.direction.y, d[3 * i + 2] = r.direction.z;
+      v[i] = r.visibility == Visibility::Visible;
+      s[i] = std::uint8_t(r.visibility);
+    });
+    return py::module_::import("lensrt").attr("Unprojection")(origins, directions, visible, status);
+  }
+
+  py::object calibrate(py::handle res, py::handle focus, py::handle sensor, py::handle fstop,
+                       py::handle model, py::handle wavelength, py::handle camera,
+                       py::handle maxResidual) const {
+    CalibrationRequest request;
+    request.camera = cameraOptions(camera, sensor, focus, fstop);
+    std::tie(request.width, request.height) = toRasterSize(res);
+    const std::string name = toText(model, "model");
+    const std::optional<OpenCvModel> m = parseOpenCvModel(name);
+    if (!m)
+      throw py::value_error("model: expected 'opencv', 'opencv4', 'full-opencv' or 'fisheye', got '" + name +
+                            "'");
+    request.model = *m;
+    request.wavelengthNm = toWavelength(wavelength);
+    request.maxResidualPx = toDouble(maxResidual, "max_residual");
+    WarningList warnings;
+    nlohmann::json json;
+    {
+      const py::gil_scoped_release release;
+      json = calibrationJson(calibrateLens(request, warnings.sink()));
+    }
     warnings.emit();
     return toPython(json);
   }
@@ -307,7 +442,46 @@ two arrays of `points` film radii from 0 to the sensor's half diagonal.)doc")
            arg("sensor") = "36x24", arg("points") = 41,
            R"doc(Distortion of the real chief ray against the paraxial image height, in percent
 (negative: barrel). Returns (field_deg, percent), two arrays up to the field
-that reaches the sensor's half diagonal.)doc");
+that reaches the sensor's half diagonal.)doc")
+      .def("project", &PyLens::project, arg("world_points"), arg("camera_to_world"), py::kw_only(),
+           arg("res"), arg("focus"), arg("sensor") = "full-frame", arg("fstop") = py::none(),
+           arg("wavelength_nm") = kWavelengthDNm, arg("camera") = "lens",
+           R"doc(Where world points image on the film, in pixels: the projection a render with the
+same keywords has (Scene.render's camera, lens, res, sensor, focus, fstop).
+
+world_points: N x 3, metres. camera_to_world: the camera's 4 x 4 pose (glTF's
+convention: it looks down -Z with +Y up; the origin at the entrance pupil),
+or None for points already in camera space. focus: metres or "inf" (not
+"auto"). camera: "lens" (the full lens), "thick", "thin" or "pinhole".
+A point maps to where its chief ray (through the stop's centre) meets the
+film, traced at wavelength_nm (the full lens with dispersion data, and the
+thick lens, image colours apart).
+Returns Projection(pixels, visible, status): raster positions (N x 2;
+(0, 0) the top-left corner of the top-left pixel, x right, y down), which are
+inside the frame, and why not: 0 visible, 1 outside the frame, 2 blocked by
+the lens (pixels: where the chief ray would land with the rims opened, NaN
+when none exists), 3 behind the camera (NaN). The GIL is released.)doc")
+      .def("unproject", &PyLens::unproject, arg("pixels"), arg("camera_to_world") = py::none(), py::kw_only(),
+           arg("res"), arg("focus"), arg("sensor") = "full-frame", arg("fstop") = py::none(),
+           arg("wavelength_nm") = kWavelengthDNm, arg("camera") = "lens",
+           R"doc(The chief ray each raster position sees: project's inverse (every point on the
+ray projects to that position). pixels: N x 2 raster positions; the other
+arguments as project's. Returns Unprojection(origins, directions, visible,
+status): world-space origins (N x 3, metres: where the ray leaves the front
+glass for the full lens, the camera origin for the others), unit directions
+toward the scene, and status as project's (2: the lens blocks it).)doc")
+      .def("calibrate", &PyLens::calibrate, py::kw_only(), arg("res"), arg("focus"),
+           arg("sensor") = "full-frame", arg("fstop") = py::none(), arg("model") = "opencv",
+           arg("wavelength_nm") = kWavelengthDNm, arg("camera") = "lens", arg("max_residual") = 1.0,
+           R"doc(OpenCV's camera model fitted to this lens's projection over the whole frame: the
+dict `lensrt lens calibrate --json` prints (fx, fy, cx, cy in OpenCV's pixels,
+whose top-left pixel's centre is (0, 0); the coefficients by name;
+camera_matrix, dist_coeffs; residual_px {rms, max, points, blocked}; colmap,
+the COLMAP cameras.txt line, whose cx, cy are OpenCV's + 0.5).
+model: "opencv" (k1 k2 p1 p2 k3), "opencv4" (k1 k2 p1 p2), "full-opencv"
+(k1..k6, p1, p2) or "fisheye" (cv2.fisheye's k1..k4). The points lie on the
+focus plane (directions at infinity). Raises ValueError when the largest
+residual exceeds max_residual pixels.)doc");
 }
 
 }  // namespace lensrt::python

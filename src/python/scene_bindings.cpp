@@ -34,33 +34,6 @@
 namespace lensrt::python {
 namespace {
 
-// How far a pose's 3x3 part may be from a rotation (float32 poses pass).
-constexpr double kRigidTolerance = 1e-4;
-
-Transform toPose(py::handle value) {
-  const auto m = toFiniteMatrix(value, "camera_to_world", 4, 4);
-  const auto at = [&](int r, int c) { return m.at(r, c); };
-  Transform::Matrix matrix{};
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) matrix[r][c] = at(r, c);
-  bool rigid = at(3, 0) == 0 && at(3, 1) == 0 && at(3, 2) == 0 && at(3, 3) == 1;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double dot = 0;
-      for (int k = 0; k < 3; ++k) dot += at(k, i) * at(k, j);
-      rigid = rigid && std::abs(dot - (i == j ? 1.0 : 0.0)) < kRigidTolerance;
-    }
-  const double det = at(0, 0) * (at(1, 1) * at(2, 2) - at(1, 2) * at(2, 1)) -
-                     at(0, 1) * (at(1, 0) * at(2, 2) - at(1, 2) * at(2, 0)) +
-                     at(0, 2) * (at(1, 0) * at(2, 1) - at(1, 1) * at(2, 0));
-  if (!rigid || det < 0)
-    throw py::value_error(
-        "camera_to_world: expected a rigid 4 x 4 pose (an orthonormal, right-handed 3 x 3 rotation, a "
-        "translation in metres, last row 0 0 0 1); the camera looks down its -Z axis with +Y up (glTF's "
-        "convention; for an OpenCV pose negate its Y and Z columns)");
-  return Transform(matrix);
-}
-
 // An H x W (x channels) float32 view of channels [first, first + count) of the
 // interleaved image, kept alive by `owner`.
 py::array channelView(py::object owner, int first, int count) {

@@ -42,6 +42,12 @@ class Marked final : public Camera {
   bool tracesWavelengths() const override { return lens_.tracesWavelengths(); }
   std::string describe() const override { return lens_.describe(); }
   CameraInfo info() const override { return lens_.info(); }
+  ProjectedPoint projectCameraPoint(const Vec3d& p, double wavelengthNm) const override {
+    return lens_.projectCameraPoint(p, wavelengthNm);
+  }
+  ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const override {
+    return lens_.unprojectRaster(raster, wavelengthNm);
+  }
 
  protected:
   std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& s) const override {

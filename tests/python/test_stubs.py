@@ -37,9 +37,10 @@ def test_every_public_name_has_a_stub():
 def test_stub_keywords_are_the_bindings_keywords():
     # pybind11 names each argument in the docstring's signature line.
     for cls_name, method in (("Lens", "info"), ("Lens", "trace"), ("Lens", "spot"),
-                             ("Lens", "relative_illumination"), ("Lens", "distortion"), ("Lens", "focus")):
+                             ("Lens", "relative_illumination"), ("Lens", "distortion"), ("Lens", "focus"),
+                             ("Lens", "project"), ("Lens", "unproject"), ("Lens", "calibrate")):
         stub = next(m for m in stub_classes()[cls_name].body if isinstance(m, ast.FunctionDef) and m.name == method)
-        keywords = [a.arg for a in stub.args.args[1:]]
+        keywords = [a.arg for a in stub.args.args[1:] + stub.args.kwonlyargs]
         signature = getattr(getattr(lensrt, cls_name), method).__doc__.splitlines()[0]
         for k in keywords:
             assert f"{k}:" in signature, f"{cls_name}.{method}: {k} not in {signature}"
