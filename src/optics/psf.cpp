@@ -225,7 +225,8 @@ double encircledEnergy(const Psf& psf, double radiusMm, Vec2d centreMm, bool lim
       const double shift =
           2.0 * kPi * (nu.x * (centreMm.x + m / 2 * psf.pixelMm) + nu.y * (centreMm.y + m / 2 * psf.pixelMm));
       const double c = std::real(spectrum(i, j) * std::polar(1.0, shift));
-      inside += ki == 0 && kj == 0 ? c * kPi * r * r : c * r * std::cyl_bessel_j(1.0, 2.0 * kPi * r * rho) / rho;
+      inside +=
+          ki == 0 && kj == 0 ? c * kPi * r * r : c * r * std::cyl_bessel_j(1.0, 2.0 * kPi * r * rho) / rho;
     }
   // The samples are light per sample, so the integral is light times the
   // sample area; m^2 from the unnormalised transform. A fraction of the

@@ -299,7 +299,7 @@ PupilFunction PupilRays::at(const ReferenceSphere& reference) const {
     p.amplitude[k] = s.amplitude;
     p.opdWaves[k] = w;
     p.light += s.light;
-    const double intensity = s.amplitude * s.amplitude;
+    const double intensity = s.light;
     sumI += intensity;
     sumW += intensity * w;
     sumW2 += intensity * w * w;

@@ -86,7 +86,7 @@ struct PupilFunction {
   std::vector<double> amplitude;
   std::vector<double> opdWaves;
   ReferenceSphere reference;
-  // Over the passing pupil, each sample weighted by its intensity: the RMS
+  // Over the passing pupil, each sample weighted by its light: the RMS
   // and peak-to-valley of the OPD about its mean (piston removed, tilt kept:
   // a tilt is the image's offset from the reference point).
   double rmsWaves = 0.0;
