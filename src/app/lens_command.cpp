@@ -161,7 +161,7 @@ void addLensCoatingsOption(CLI::App& cmd, std::string& coatings, const std::stri
 
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
   CLI::App* lensApp =
-      app.add_subcommand("lens", "Lens tools: info, diagram, plot and ghosts of a prescription");
+      app.add_subcommand("lens", "Lens tools: info, diagram, plot, ghosts, psf and mtf of a prescription");
   lensApp->require_subcommand(1);
   // One entry per `lens` sub-subcommand (diagram and plot join here).
   std::vector<std::pair<CLI::App*, CommandAction>> subs;
@@ -174,6 +174,8 @@ CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
   add(addLensDiagramCommand);
   add(addLensPlotCommand);
   add(addLensGhostsCommand);
+  add(addLensPsfCommand);
+  add(addLensMtfCommand);
   return [subs] {
     for (const auto& [sub, action] : subs)
       if (sub->parsed()) return action();

@@ -21,5 +21,8 @@ CommandAction addLensDiagramCommand(CLI::App& lens, const CommandContext& contex
 CommandAction addLensPlotCommand(CLI::App& lens, const CommandContext& context);
 // lens_ghosts_command.cpp: `lens ghosts LENS [--coatings X] [--json]`.
 CommandAction addLensGhostsCommand(CLI::App& lens, const CommandContext& context);
+// lens_psf_command.cpp, lens_mtf_command.cpp: `lens psf` and `lens mtf` (app/lens_wave_flags.h).
+CommandAction addLensPsfCommand(CLI::App& lens, const CommandContext& context);
+CommandAction addLensMtfCommand(CLI::App& lens, const CommandContext& context);
 
 }  // namespace lensrt

@@ -47,7 +47,7 @@ PsfModel::~PsfModel() = default;
 PsfModel::PsfModel(PsfModel&&) noexcept = default;
 
 PsfModel::PsfModel(const LensSystem& lens, PsfSettings settings)
-    : lens_(&lens), settings_(std::move(settings)) {
+    : lens_(lens), settings_(std::move(settings)) {
   checkSettings(settings_);
   const PsfSettings& s = settings_;
   const std::string& name = lens.prescription().name;
@@ -91,13 +91,13 @@ PsfModel::PsfModel(const LensSystem& lens, PsfSettings settings)
 }
 
 PupilFunction PsfModel::pupilFunction(double filmShiftMm) const {
-  const double filmZ = lens_->rearZ() + settings_.filmDistanceMm + filmShiftMm;
-  return wavelengths_.front().rays.at(referenceSphere(*lens_, primaryBeam_, filmZ));
+  const double filmZ = lens_.rearZ() + settings_.filmDistanceMm + filmShiftMm;
+  return wavelengths_.front().rays.at(referenceSphere(lens_, primaryBeam_, filmZ));
 }
 
 Psf PsfModel::psf(double filmShiftMm) const {
-  const double filmZ = lens_->rearZ() + settings_.filmDistanceMm + filmShiftMm;
-  const ReferenceSphere reference = referenceSphere(*lens_, primaryBeam_, filmZ);
+  const double filmZ = lens_.rearZ() + settings_.filmDistanceMm + filmShiftMm;
+  const ReferenceSphere reference = referenceSphere(lens_, primaryBeam_, filmZ);
   Psf psf;
   const int m = fftSize_;
   psf.size = m;
@@ -202,11 +202,14 @@ double Psf::rmsRadiusMm() const {
   return total > 0.0 ? std::sqrt(sum / total) : 0.0;
 }
 
-double encircledEnergy(const Psf& psf, double radiusMm, Vec2d centreMm, bool limit) {
+std::vector<double> encircledEnergy(const Psf& psf, const std::vector<double>& radiiMm, Vec2d centreMm,
+                                    bool limit) {
   // The sampled intensity I_m is the trigonometric series sum_k C_k
   // exp(2 pi i nu_k.x) (band-limited: its spectrum, the OTF, lies within the
   // grid's frequencies), whose integral over a disc of radius r about c is
   // sum_k C_k exp(2 pi i nu_k.c) r J1(2 pi r |nu_k|) / |nu_k| (pi r^2 at 0).
+  // The Bessel factor depends on |k|^2 alone: the terms are summed per
+  // |k|^2 first, so each radius costs one J1 per distinct |k|^2.
   const int m = psf.size;
   const std::vector<double>& values = limit ? psf.limit : psf.intensity;
   ComplexGrid spectrum(m);
@@ -214,24 +217,34 @@ double encircledEnergy(const Psf& psf, double radiusMm, Vec2d centreMm, bool lim
     for (int i = 0; i < m; ++i) spectrum(i, j) = values[std::size_t(j) * std::size_t(m) + std::size_t(i)];
   spectrum.transform(-1);
   const double window = m * psf.pixelMm;
-  const double r = radiusMm;
-  double inside = 0.0;
+  std::vector<double> byNorm(std::size_t(m / 2 + 1) * std::size_t(m / 2 + 1) * 2, 0.0);
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < m; ++i) {
       // Frequencies symmetric about 0; the samples start at offset -m/2 pixels.
       const int ki = i <= m / 2 ? i : i - m, kj = j <= m / 2 ? j : j - m;
       const Vec2d nu{ki / window, kj / window};
-      const double rho = std::hypot(nu.x, nu.y);
       const double shift =
           2.0 * kPi * (nu.x * (centreMm.x + m / 2 * psf.pixelMm) + nu.y * (centreMm.y + m / 2 * psf.pixelMm));
-      const double c = std::real(spectrum(i, j) * std::polar(1.0, shift));
-      inside +=
-          ki == 0 && kj == 0 ? c * kPi * r * r : c * r * std::cyl_bessel_j(1.0, 2.0 * kPi * r * rho) / rho;
+      byNorm[std::size_t(ki * ki + kj * kj)] += std::real(spectrum(i, j) * std::polar(1.0, shift));
     }
-  // The samples are light per sample, so the integral is light times the
-  // sample area; m^2 from the unnormalised transform. A fraction of the
-  // field's whole light, not of the window's.
-  return inside / (window * window);
+  std::vector<double> out;
+  for (const double r : radiiMm) {
+    double inside = byNorm[0] * kPi * r * r;
+    for (std::size_t q = 1; q < byNorm.size(); ++q) {
+      if (byNorm[q] == 0.0) continue;
+      const double rho = std::sqrt(double(q)) / window;
+      inside += byNorm[q] * r * std::cyl_bessel_j(1.0, 2.0 * kPi * r * rho) / rho;
+    }
+    // The samples are light per sample, so the integral is light times the
+    // sample area; m^2 from the unnormalised transform. A fraction of the
+    // field's whole light, not of the window's.
+    out.push_back(inside / (window * window));
+  }
+  return out;
+}
+
+double encircledEnergy(const Psf& psf, double radiusMm, Vec2d centreMm, bool limit) {
+  return encircledEnergy(psf, std::vector<double>{radiusMm}, centreMm, limit).front();
 }
 
 }  // namespace lensrt

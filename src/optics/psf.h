@@ -101,7 +101,7 @@ class PsfModel {
 
  private:
   struct Wavelength;
-  const LensSystem* lens_;
+  LensSystem lens_;  // a copy: the model outlives (or moves away from) its caller's
   PsfSettings settings_;
   PupilBeam primaryBeam_;
   int pupilSamples_ = 0;
@@ -114,5 +114,8 @@ class PsfModel {
 // to originMm), from its Fourier series: exact for the sampled (band-limited)
 // intensity, not a sum of pixels. `limit`: of the diffraction limit.
 double encircledEnergy(const Psf& psf, double radiusMm, Vec2d centreMm = {}, bool limit = false);
+// The same at many radii (one transform).
+std::vector<double> encircledEnergy(const Psf& psf, const std::vector<double>& radiiMm, Vec2d centreMm = {},
+                                    bool limit = false);
 
 }  // namespace lensrt
