@@ -102,6 +102,12 @@ LensWave prepareLensWave(const UserLens& user, const LensViewOptions& viewOption
       s.stop = [mask, stopRadius](double x, double y) { return mask->transmittance({x, y}, stopRadius); };
       w.stopText = "mask " + mask->describe();
     }
+    // A field whose chief ray does not pass is a bad --field for this lens.
+    if (!chiefRayAim(lens, s.field, s.wavelengthsNm.front()))
+      throw UsageError("--field",
+                       fmt::format("{}: {:g} deg is beyond the lens's coverage (its chief ray does not "
+                                   "pass the lens)",
+                                   user.label, wave.fieldDeg));
     w.model = std::make_unique<PsfModel>(lens, std::move(s));
     return std::move(w);
   });

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 #include "core/constants.h"
 #include "core/error.h"
@@ -22,6 +24,12 @@ namespace {
 constexpr int kAutoFirstHalf = 32;  // 65 samples across the pupil
 constexpr int kAutoMaxHalf = 256;   // 513
 constexpr double kAutoMaxStepWaves = 0.25;
+
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
 
 void checkSettings(const PsfSettings& s) {
   if (s.wavelengthsNm.empty()) throw std::invalid_argument("the PSF needs at least one wavelength");
@@ -55,9 +63,9 @@ PsfModel::PsfModel(const LensSystem& lens, PsfSettings settings)
   for (const double wl : s.wavelengthsNm) {
     const auto beam = pupilBeam(lens, s.field, wl);
     if (!beam)
-      throw InputError(name, "the field at " + std::to_string(s.field.angleDeg) +
+      throw InputError(name, "the field at " + shortNumber(s.field.angleDeg) +
                                  " deg is beyond the lens's coverage: its chief ray does not pass at " +
-                                 std::to_string(wl) + " nm");
+                                 shortNumber(wl) + " nm");
     beams.push_back(*beam);
   }
   primaryBeam_ = beams.front();
