@@ -60,6 +60,38 @@ class Lens:
         self, fstop: float | None = None, focus: _Distance = "inf", sensor: _Sensor = "36x24", points: int = 41
     ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
     def ghosts(self, coatings: str = "none") -> dict[str, Any]: ...
+    def psf(
+        self,
+        field_deg: float = 0.0,
+        fstop: float | None = None,
+        focus: _Distance = "inf",
+        wavelengths_nm: Sequence[float] | None = None,
+        weights: Sequence[float] | None = None,
+        pupil_samples: int = 0,
+        padding: int = 4,
+        blades: int = 0,
+        blade_rotation_deg: float = 0.0,
+        aperture_mask: str | os.PathLike[str] | None = None,
+        coatings: str | None = None,
+    ) -> dict[str, Any]: ...
+    def mtf(
+        self,
+        field_deg: float = 0.0,
+        fstop: float | None = None,
+        focus: _Distance = "inf",
+        wavelengths_nm: Sequence[float] | None = None,
+        weights: Sequence[float] | None = None,
+        pupil_samples: int = 0,
+        padding: int = 4,
+        blades: int = 0,
+        blade_rotation_deg: float = 0.0,
+        aperture_mask: str | os.PathLike[str] | None = None,
+        coatings: str | None = None,
+        max_frequency: float | None = None,
+        points: int = 101,
+        focus_frequency: float | None = None,
+        focus_range_mm: float | None = None,
+    ) -> dict[str, Any]: ...
 
 class RenderResult:
     @property
