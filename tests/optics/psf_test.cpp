@@ -153,7 +153,7 @@ TEST(Psf, AberrationFreeMtfIsTheDiffractionLimitedFormula) {
     }
   }
   EXPECT_GT(compared, 100);
-  EXPECT_LT(worst, 0.005);  // measured 0.0023
+  EXPECT_LT(worst, 0.005);  // measured 0.0024 over 118 frequencies
 }
 
 // Polychromatic: the MTF is the weighted mean of the wavelengths' OTFs
