@@ -106,6 +106,37 @@ class Lens:
         wavelength_nm: float = 587.5618,
         camera: str = "lens",
         max_residual: float = 1.0,
+    def psf(
+        self,
+        field_deg: float = 0.0,
+        fstop: float | None = None,
+        focus: _Distance = "inf",
+        wavelengths_nm: Sequence[float] | None = None,
+        weights: Sequence[float] | None = None,
+        pupil_samples: int = 0,
+        padding: int = 4,
+        blades: int = 0,
+        blade_rotation_deg: float = 0.0,
+        aperture_mask: str | os.PathLike[str] | None = None,
+        coatings: str | None = None,
+    ) -> dict[str, Any]: ...
+    def mtf(
+        self,
+        field_deg: float = 0.0,
+        fstop: float | None = None,
+        focus: _Distance = "inf",
+        wavelengths_nm: Sequence[float] | None = None,
+        weights: Sequence[float] | None = None,
+        pupil_samples: int = 0,
+        padding: int = 4,
+        blades: int = 0,
+        blade_rotation_deg: float = 0.0,
+        aperture_mask: str | os.PathLike[str] | None = None,
+        coatings: str | None = None,
+        max_frequency: float | None = None,
+        points: int = 101,
+        focus_frequency: float | None = None,
+        focus_range_mm: float | None = None,
     ) -> dict[str, Any]: ...
 
 class RenderResult:

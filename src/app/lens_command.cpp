@@ -161,7 +161,7 @@ void addLensCoatingsOption(CLI::App& cmd, std::string& coatings, const std::stri
 
 CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
   CLI::App* lensApp =
-      app.add_subcommand("lens", "Lens tools: info, diagram, plot, ghosts and calibrate of a prescription");
+      app.add_subcommand("lens", "Lens tools: info, diagram, plot, ghosts, calibrate, psf and mtf of a prescription");
   lensApp->require_subcommand(1);
   // One entry per `lens` sub-subcommand (diagram and plot join here).
   std::vector<std::pair<CLI::App*, CommandAction>> subs;
@@ -175,6 +175,8 @@ CommandAction addLensCommand(CLI::App& app, const CommandContext& context) {
   add(addLensPlotCommand);
   add(addLensGhostsCommand);
   add(addLensCalibrateCommand);
+  add(addLensPsfCommand);
+  add(addLensMtfCommand);
   return [subs] {
     for (const auto& [sub, action] : subs)
       if (sub->parsed()) return action();

@@ -23,5 +23,8 @@ CommandAction addLensPlotCommand(CLI::App& lens, const CommandContext& context);
 CommandAction addLensGhostsCommand(CLI::App& lens, const CommandContext& context);
 // lens_calibrate_command.cpp: `lens calibrate LENS --res WxH --focus M|inf [--model ...] [--json]`.
 CommandAction addLensCalibrateCommand(CLI::App& lens, const CommandContext& context);
+// lens_psf_command.cpp, lens_mtf_command.cpp: `lens psf` and `lens mtf` (app/lens_wave_flags.h).
+CommandAction addLensPsfCommand(CLI::App& lens, const CommandContext& context);
+CommandAction addLensMtfCommand(CLI::App& lens, const CommandContext& context);
 
 }  // namespace lensrt

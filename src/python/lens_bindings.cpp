@@ -22,12 +22,15 @@
 #include "api/option_parsers.h"
 #include "api/render_options.h"
 #include "api/standalone_camera.h"
+#include "api/lens_wave.h"
 #include "core/constants.h"
 #include "optics/coating.h"
 #include "optics/distortion.h"
 #include "optics/focus.h"
 #include "optics/ghosts.h"
 #include "optics/lens_system.h"
+#include "optics/mtf.h"
+#include "optics/psf.h"
 #include "optics/relative_illumination.h"
 #include "optics/spot_diagram.h"
 #include "python/arguments.h"
@@ -372,6 +375,110 @@ class PyLens {
     return py::make_tuple(angle, percent);
   }
 
+  // Lens.psf() and Lens.mtf(): the keywords of `lens psf` / `lens mtf`.
+  struct WaveArguments {
+    py::handle field, fstop, focus, wavelengths, weights, pupilSamples, padding, blades, bladeRotation, mask,
+        coatings;
+  };
+  LensWave wave(const WaveArguments& a, WarningList& warnings) const {
+    LensViewOptions o;
+    o.fNumber = toOptionalDouble(a.fstop, "fstop");
+    o.focus = toDistanceText(a.focus, "focus");
+    const std::optional<Coating> coating = toCoating(a.coatings);
+    o.coatings = coating ? coatingName(*coating) : "";
+    LensWaveOptions w;
+    w.fieldDeg = toDouble(a.field, "field_deg");
+    if (!isNone(a.wavelengths)) w.wavelengthsNm = toDoubles(a.wavelengths, "wavelengths_nm");
+    if (!isNone(a.weights)) w.weights = toDoubles(a.weights, "weights");
+    w.pupilSamples = int(toInteger(a.pupilSamples, "pupil_samples", 0, 2049));
+    w.padding = int(toInteger(a.padding, "padding", 2, 32));
+    w.blades = int(toInteger(a.blades, "blades", 0, 64));
+    w.bladeRotationDeg = toDouble(a.bladeRotation, "blade_rotation_deg");
+    if (!isNone(a.mask)) w.apertureMask = toPathText(a.mask, "aperture_mask");
+    return prepareLensWave(lens_, o, w, warnings.sink());
+  }
+
+  static std::vector<double> toDoubles(py::handle value, const char* name) {
+    std::vector<double> out;
+    if (py::isinstance<py::str>(value)) badArgument(name, "a sequence of numbers", value);
+    for (const py::handle item : py::iter(value)) out.push_back(toDouble(item, name));
+    return out;
+  }
+
+  static py::array_t<double> toArray(const std::vector<double>& values) {
+    py::array_t<double> out(py::ssize_t(values.size()));
+    std::copy(values.begin(), values.end(), out.mutable_data());
+    return out;
+  }
+
+  py::dict psf(const WaveArguments& a) const {
+    WarningList warnings;
+    const LensWave w = wave(a, warnings);
+    warnings.emit();
+    Psf psf;
+    {
+      const py::gil_scoped_release release;
+      psf = withLensErrors(lens_, [&] { return w.model->psf(); });
+    }
+    const auto grid = [&](const std::vector<double>& v) {
+      py::array_t<double> out({py::ssize_t(psf.size), py::ssize_t(psf.size)});
+      std::copy(v.begin(), v.end(), out.mutable_data());
+      return out;
+    };
+    py::dict d;
+    d["psf"] = grid(psf.intensity);
+    d["limit"] = grid(psf.limit);
+    d["pixel_um"] = psf.pixelMm * 1000.0;
+    d["summary"] = toPython(psfSummaryJson(w, psf));
+    return d;
+  }
+
+  py::dict mtf(const WaveArguments& a, py::handle maxFrequency, py::handle points, py::handle focusFrequency,
+               py::handle focusRange) const {
+    const int count = int(toInteger(points, "points", 2, 100000));
+    const std::optional<double> maxF = toOptionalDouble(maxFrequency, "max_frequency");
+    const std::optional<double> focusF = toOptionalDouble(focusFrequency, "focus_frequency");
+    const std::optional<double> range = toOptionalDouble(focusRange, "focus_range_mm");
+    for (const auto& [v, name] : {std::pair{maxF, "max_frequency"}, std::pair{focusF, "focus_frequency"},
+                                  std::pair{range, "focus_range_mm"}})
+      if (v && !(*v > 0.0)) throw py::value_error(std::string(name) + ": must be positive");
+    WarningList warnings;
+    const LensWave w = wave(a, warnings);
+    warnings.emit();
+    Psf psf;
+    MtfCurves curves;
+    ThroughFocusMtf focus;
+    {
+      const py::gil_scoped_release release;
+      withLensErrors(lens_, [&] {
+        psf = w.model->psf();
+        const double cutoff = std::max(psf.cutoffPerMm.x, psf.cutoffPerMm.y);
+        curves = mtfCurves(psf, maxF.value_or(cutoff), count);
+        const double primary = w.model->settings().wavelengthsNm.front() * 1e-6;
+        const double reach = range.value_or(4.0 * primary * w.fNumber * w.fNumber);
+        std::vector<double> shifts;
+        for (int k = 0; k <= 20; ++k) shifts.push_back(reach * (k / 10.0 - 1.0));
+        focus = throughFocusMtf(*w.model, focusF.value_or(cutoff / 4.0), shifts);
+        return 0;
+      });
+    }
+    py::dict d;
+    d["frequency_per_mm"] = toArray(curves.frequencyPerMm);
+    d["tangential"] = toArray(curves.tangential);
+    d["sagittal"] = toArray(curves.sagittal);
+    d["limit_tangential"] = toArray(curves.limitTangential);
+    d["limit_sagittal"] = toArray(curves.limitSagittal);
+    py::dict tf;
+    tf["frequency_per_mm"] = focus.frequencyPerMm;
+    tf["film_shift_mm"] = toArray(focus.filmShiftMm);
+    tf["tangential"] = toArray(focus.tangential);
+    tf["sagittal"] = toArray(focus.sagittal);
+    tf["limit"] = toArray(focus.limit);
+    d["through_focus"] = tf;
+    d["summary"] = toPython(psfSummaryJson(w, psf));
+    return d;
+  }
+
  private:
   UserLens lens_;
 };
@@ -481,7 +588,45 @@ the COLMAP cameras.txt line, whose cx, cy are OpenCV's + 0.5).
 model: "opencv" (k1 k2 p1 p2 k3), "opencv4" (k1 k2 p1 p2), "full-opencv"
 (k1..k6, p1, p2) or "fisheye" (cv2.fisheye's k1..k4). The points lie on the
 focus plane (directions at infinity). Raises ValueError when the largest
-residual exceeds max_residual pixels.)doc");
+residual exceeds max_residual pixels.)doc")
+      .def(
+          "psf",
+          [](const PyLens& l, py::handle field, py::handle fstop, py::handle focus, py::handle wavelengths,
+             py::handle weights, py::handle pupilSamples, py::handle padding, py::handle blades,
+             py::handle bladeRotation, py::handle mask, py::handle coatings) {
+            return l.psf({field, fstop, focus, wavelengths, weights, pupilSamples, padding, blades,
+                          bladeRotation, mask, coatings});
+          },
+          arg("field_deg") = 0.0, arg("fstop") = py::none(), arg("focus") = "inf",
+          arg("wavelengths_nm") = py::none(), arg("weights") = py::none(), arg("pupil_samples") = 0,
+          arg("padding") = 4, arg("blades") = 0, arg("blade_rotation_deg") = 0.0,
+          arg("aperture_mask") = py::none(), arg("coatings") = py::none(),
+          R"doc(The PSF of a field point by FFT of its pupil function (as `lensrt lens psf`):
+a dict with "psf" and "limit" (the same pupil without its OPD), size x size
+arrays on the film (rows along y, the chief ray's image at [size/2, size/2],
+values the fraction of the light per sample), "pixel_um", and "summary" (the
+sampling, Strehl ratio, RMS OPD per wavelength). wavelengths_nm defaults to
+the d, F and C lines, the first the primary; weights to equal.)doc")
+      .def(
+          "mtf",
+          [](const PyLens& l, py::handle field, py::handle fstop, py::handle focus, py::handle wavelengths,
+             py::handle weights, py::handle pupilSamples, py::handle padding, py::handle blades,
+             py::handle bladeRotation, py::handle mask, py::handle coatings, py::handle maxFrequency,
+             py::handle points, py::handle focusFrequency, py::handle focusRange) {
+            return l.mtf({field, fstop, focus, wavelengths, weights, pupilSamples, padding, blades,
+                          bladeRotation, mask, coatings},
+                         maxFrequency, points, focusFrequency, focusRange);
+          },
+          arg("field_deg") = 0.0, arg("fstop") = py::none(), arg("focus") = "inf",
+          arg("wavelengths_nm") = py::none(), arg("weights") = py::none(), arg("pupil_samples") = 0,
+          arg("padding") = 4, arg("blades") = 0, arg("blade_rotation_deg") = 0.0,
+          arg("aperture_mask") = py::none(), arg("coatings") = py::none(), arg("max_frequency") = py::none(),
+          arg("points") = 101, arg("focus_frequency") = py::none(), arg("focus_range_mm") = py::none(),
+          R"doc(The MTF of a field point (as `lensrt lens mtf`): a dict of arrays
+"frequency_per_mm", "tangential", "sagittal", "limit_tangential",
+"limit_sagittal" (`points` frequencies up to max_frequency, default the
+cutoff), "through_focus" (the MTF at focus_frequency, default a quarter of
+the cutoff, for 21 film shifts over +-focus_range_mm) and "summary".)doc");
 }
 
 }  // namespace lensrt::python

@@ -141,3 +141,27 @@ def test_missing_lens_is_file_not_found(tmp_path):
     broken.write_text("# radius thickness\n50 abc\n")
     with pytest.raises(ValueError, match="broken.lens"):
         lensrt.Lens(broken)
+
+
+def test_psf_and_mtf_are_lens_psf_and_mtf(cli_json):
+    lens = lensrt.Lens("dgauss-50mm")
+    psf = lens.psf(fstop=8, wavelengths_nm=[550.0])
+    summary = cli_json("lens", "psf", "dgauss-50mm", "--json", "--fstop", "8", "--wavelengths", "550")
+    assert psf["summary"] == summary
+    size = summary["sampling"]["fft_size"]
+    assert psf["psf"].shape == (size, size) and psf["limit"].shape == (size, size)
+    # Fractions of the light, the peak at the chief ray's image on the axis.
+    assert 0.98 < psf["psf"].sum() <= 1.0
+    assert np.unravel_index(psf["limit"].argmax(), psf["limit"].shape) == (size // 2, size // 2)
+    assert math.isclose(psf["psf"].max() / psf["limit"].max(), summary["strehl"], rel_tol=1e-12)
+    mtf = lens.mtf(fstop=8, wavelengths_nm=[550.0], points=11)
+    cli = cli_json("lens", "mtf", "dgauss-50mm", "--json", "--fstop", "8", "--wavelengths", "550")
+    assert mtf["frequency_per_mm"].shape == (11,) and mtf["tangential"][0] == 1.0
+    assert mtf["frequency_per_mm"][-1] == pytest.approx(cli["mtf"]["frequency_per_mm"][-1])
+    assert mtf["tangential"][-1] == pytest.approx(cli["mtf"]["tangential"][-1])
+    assert list(mtf["through_focus"]["tangential"]) == pytest.approx(cli["through_focus"]["tangential"])
+
+
+def test_psf_refuses_a_field_beyond_the_coverage():
+    with pytest.raises(ValueError, match="coverage"):
+        lensrt.Lens("dgauss-50mm").psf(field_deg=60)

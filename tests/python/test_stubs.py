@@ -38,7 +38,8 @@ def test_stub_keywords_are_the_bindings_keywords():
     # pybind11 names each argument in the docstring's signature line.
     for cls_name, method in (("Lens", "info"), ("Lens", "trace"), ("Lens", "spot"),
                              ("Lens", "relative_illumination"), ("Lens", "distortion"), ("Lens", "focus"),
-                             ("Lens", "project"), ("Lens", "unproject"), ("Lens", "calibrate")):
+                             ("Lens", "project"), ("Lens", "unproject"), ("Lens", "calibrate"),
+                             ("Lens", "psf"), ("Lens", "mtf")):
         stub = next(m for m in stub_classes()[cls_name].body if isinstance(m, ast.FunctionDef) and m.name == method)
         keywords = [a.arg for a in stub.args.args[1:] + stub.args.kwonlyargs]
         signature = getattr(getattr(lensrt, cls_name), method).__doc__.splitlines()[0]
