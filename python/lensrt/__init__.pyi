@@ -106,6 +106,7 @@ class Lens:
         wavelength_nm: float = 587.5618,
         camera: str = "lens",
         max_residual: float = 1.0,
+    ) -> dict[str, Any]: ...
     def psf(
         self,
         field_deg: float = 0.0,
