@@ -11,7 +11,6 @@
 #include "camera/pinhole_camera.h"
 #include "core/constants.h"
 #include "core/error.h"
-#include "optics/chromatic.h"
 #include "optics/focus.h"
 #include "optics/lens_readers.h"
 #include "optics/paraxial.h"
@@ -53,6 +52,12 @@ FilmGeometry cameraFilm(const Vec2d& sensor, int width, int height) {
   return f;
 }
 
+void checkCameraSpec(const CameraSpec& c) {
+  if (!c.apertureMask.empty() && c.blades)
+    throw UsageError("--aperture-mask", "replaces --blades: give one of them");
+  if (c.focusPixel && !c.autoFocus()) throw UsageError("--focus-pixel", "only applies with --focus auto");
+}
+
 Exposure cameraExposure(const CameraSpec& c, const ShutterSpec& shutter) {
   Exposure exposure;
   exposure.mode = c.exposure;
@@ -65,6 +70,7 @@ std::unique_ptr<Camera> makeCamera(const CameraRequest& request, const CameraDes
                                    FilmGeometry rasterFilm, const HitDistance& hitDistance,
                                    Warnings& warnings, const LensCamera** flareLens) {
   const CameraSpec& o = request.camera;
+  checkCameraSpec(o);
   const FilmGeometry film = cameraFilm(o.sensorMm, rasterFilm.width, rasterFilm.height);
   const bool pinhole = o.model == CameraModel::Pinhole;
   if (gltf.orthographic) {
@@ -157,7 +163,6 @@ std::unique_ptr<Camera> buildCamera(const CameraRequest& request, const CameraDe
   // Focus: what the chosen pixel sees, measured along the axis.
   std::optional<double> focus =
       o.focusKeys.empty() ? o.focusMetres : std::optional<double>(valueAt(o.focusKeys, request.timeSeconds));
-  if (o.focusPixel && focus) throw UsageError("--focus-pixel", "only applies with --focus auto");
   const bool needsFocus = o.model != CameraModel::Pinhole || lens.has_value();
   if (!focus && needsFocus) {
     Vec2d pixel{film.width / 2.0, film.height / 2.0};

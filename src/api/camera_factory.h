@@ -36,6 +36,12 @@ struct CameraRequest {
   double timeSeconds = 0.0;  // when the shutter opens: where keyframed settings are read
 };
 
+// The camera settings' checks across rows that hold for every model (an
+// aperture mask or blades; a focus pixel only with auto focus): part of
+// checkSpec, and of makeCamera for callers that make cameras directly.
+// Throws UsageError.
+void checkCameraSpec(const CameraSpec& camera);
+
 // The exposure the spec asks for (the shutter's time, the ISO).
 Exposure cameraExposure(const CameraSpec& camera, const ShutterSpec& shutter);
 

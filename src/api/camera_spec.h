@@ -43,7 +43,7 @@ struct CameraSpec {
   bool dispersion = true;                            // trace each sample at its wavelength
   std::optional<Coating> coatings;                   // none: lossless glass
   std::optional<FilmQuantity> film;                  // none: the model's default
-  LensMovements movements;  // the film's shift and tilt (camera/lens_movements.h)
+  LensMovements movements;                           // the film's shift and tilt (camera/lens_movements.h)
   std::filesystem::path lensDir = defaultLensDir();  // the lens library
 
   bool autoFocus() const { return !focusMetres && focusKeys.empty(); }

@@ -3,7 +3,6 @@
 #include "api/aperture_mask_file.h"
 #include "api/camera_models.h"
 #include "camera/lens_camera.h"
-#include "core/error.h"
 
 namespace lensrt {
 
@@ -13,7 +12,6 @@ CameraModelInfo fullLensModel() {
             const CameraSpec& o = b.spec;
             LensCameraParams p;
             if (!o.apertureMask.empty()) {
-              if (o.blades) throw UsageError("--aperture-mask", "replaces --blades: give one of them");
               p.mask = std::make_shared<const ApertureMask>(readApertureMask(o.apertureMask.string()));
             }
             p.fNumber = b.fNumber;

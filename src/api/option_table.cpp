@@ -9,6 +9,7 @@
 #include <map>
 #include <utility>
 
+#include "api/camera_factory.h"
 #include "api/camera_models.h"
 #include "api/option_parsers.h"
 #include "core/error.h"
@@ -86,7 +87,6 @@ Option text(Option o, Get get) {
   o.show = [=](const RenderSpec& s) { return std::string(get(s)); };
   return o;
 }
-
 
 bool notPinhole(const RenderSpec& s) {
   return s.camera.model != CameraModel::Pinhole;
@@ -439,16 +439,13 @@ std::vector<Option> makeTable() {
 
   // --- Stray light (api/flare_spec.h).
   group = "flare";
-  {
-    Option& o = add(onOff(
-        row("--flare", "flare", "on|off",
-            "on: stray light in the full lens (--camera lens): every surface reflects its "
-            "Fresnel share (bare glass unless --coatings), so ghosts of bright sources and "
-            "veiling glare appear; off (default)",
-            "on", PyValue::Switch),
-        [](auto& s) -> auto& { return s.flare.on; }));
-    (void)o;
-  }
+  add(onOff(
+      row("--flare", "flare", "on|off",
+          "on: stray light in the full lens (--camera lens): every surface reflects its "
+          "Fresnel share (bare glass unless --coatings), so ghosts of bright sources and "
+          "veiling glare appear; off (default)",
+          "on", PyValue::Switch),
+      [](auto& s) -> auto& { return s.flare.on; }));
   {
     Option o = row("--flare-bounces", "flare_bounces", "0|2|4",
                    "with --flare on, the most reflections a path takes in the lens: 0, 2 (default: the "
@@ -932,12 +929,9 @@ const Option* findOption(std::string_view name) {
 
 void checkSpec(const RenderSpec& s, unsigned command) {
   const CameraSpec& c = s.camera;
-  const std::string model = cameraModelName(c.model);
   if (!c.apertureMask.empty() && c.model != CameraModel::Lens && command == kRenderCommand)
     throw UsageError("--aperture-mask", "needs --camera lens (the mask sits at the lens's stop)");
-  if (!c.apertureMask.empty() && c.blades)
-    throw UsageError("--aperture-mask", "replaces --blades: give one of them");
-  if (c.focusPixel && !c.autoFocus()) throw UsageError("--focus-pixel", "only applies with --focus auto");
+  checkCameraSpec(c);
   if (c.exposure == ExposureMode::Physical && !(s.shutter.shutterSeconds() > 0))
     throw UsageError("--shutter", "--exposure physical records no light in a shutter time of 0");
   if (s.flare.on && c.model != CameraModel::Lens && command == kRenderCommand)
@@ -962,7 +956,6 @@ void checkSpec(const RenderSpec& s, unsigned command) {
     throw UsageError("--frame", "give --time SECONDS or --frame N, not both");
   if (s.tile && s.crop) throw UsageError("--tile", "excludes --crop: give one of them");
   adaptiveSampling(s.sampling);
-  (void)model;
 }
 
 std::optional<AdaptiveSampling> adaptiveSampling(const SamplingSpec& s) {

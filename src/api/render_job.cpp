@@ -299,8 +299,7 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const Exposure& exposure
     metadata["lensrt:region"] = PixelRegion{out.image.originX, out.image.originX + out.image.width,
                                             out.image.originY, out.image.originY + out.image.height}
                                     .describe();
-  ImageMetadata ids = identity;
-  metadata.merge(ids);
+  metadata.insert(identity.begin(), identity.end());  // keys already set stay
   metadata.merge(cameraMetadata(camera, exposure));
   // The film's colour: the transport, and what its RGB means.
   const FilmResponse* response = settings.filmResponse.get();

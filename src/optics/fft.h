@@ -10,6 +10,7 @@
 #include <complex>
 #include <cstddef>
 #include <memory>
+#include <utility>
 
 namespace lensrt {
 
@@ -20,6 +21,9 @@ class ComplexGrid {
   ~ComplexGrid();
   ComplexGrid(const ComplexGrid&) = delete;
   ComplexGrid& operator=(const ComplexGrid&) = delete;
+  ComplexGrid(ComplexGrid&& other) noexcept
+      : size_(std::exchange(other.size_, 0)), data_(std::exchange(other.data_, nullptr)) {}
+  ComplexGrid& operator=(ComplexGrid&&) = delete;
 
   int size() const { return size_; }
   std::complex<double>& operator()(int i, int j) {

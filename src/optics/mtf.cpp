@@ -10,11 +10,7 @@ namespace lensrt {
 
 MtfSamples mtfSamples(const Psf& psf, bool limit) {
   const int m = psf.size;
-  const std::vector<double>& values = limit ? psf.limit : psf.intensity;
-  ComplexGrid spectrum(m);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) spectrum(i, j) = values[std::size_t(j) * std::size_t(m) + std::size_t(i)];
-  spectrum.transform(-1);
+  const ComplexGrid spectrum = psfSpectrum(psf, limit);
   MtfSamples s;
   s.stepPerMm = 1.0 / (m * psf.pixelMm);
   // The PSF's samples are fractions of the whole light, so the spectrum is

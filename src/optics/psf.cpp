@@ -210,6 +210,16 @@ double Psf::rmsRadiusMm() const {
   return total > 0.0 ? std::sqrt(sum / total) : 0.0;
 }
 
+ComplexGrid psfSpectrum(const Psf& psf, bool limit) {
+  const int m = psf.size;
+  const std::vector<double>& values = limit ? psf.limit : psf.intensity;
+  ComplexGrid spectrum(m);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) spectrum(i, j) = values[std::size_t(j) * std::size_t(m) + std::size_t(i)];
+  spectrum.transform(-1);
+  return spectrum;
+}
+
 std::vector<double> encircledEnergy(const Psf& psf, const std::vector<double>& radiiMm, Vec2d centreMm,
                                     bool limit) {
   // The sampled intensity I_m is the trigonometric series sum_k C_k
@@ -219,11 +229,7 @@ std::vector<double> encircledEnergy(const Psf& psf, const std::vector<double>& r
   // The Bessel factor depends on |k|^2 alone: the terms are summed per
   // |k|^2 first, so each radius costs one J1 per distinct |k|^2.
   const int m = psf.size;
-  const std::vector<double>& values = limit ? psf.limit : psf.intensity;
-  ComplexGrid spectrum(m);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) spectrum(i, j) = values[std::size_t(j) * std::size_t(m) + std::size_t(i)];
-  spectrum.transform(-1);
+  const ComplexGrid spectrum = psfSpectrum(psf, limit);
   const double window = m * psf.pixelMm;
   std::vector<double> byNorm(std::size_t(m / 2 + 1) * std::size_t(m / 2 + 1) * 2, 0.0);
   for (int j = 0; j < m; ++j)

@@ -24,6 +24,7 @@
 
 #include "core/vec.h"
 #include "optics/distortion.h"
+#include "optics/fft.h"
 #include "optics/glass.h"
 #include "optics/lens_system.h"
 #include "optics/pupil_function.h"
@@ -113,6 +114,9 @@ class PsfModel {
 // The fraction of the PSF's energy within `radiusMm` of `centreMm` (relative
 // to originMm), from its Fourier series: exact for the sampled (band-limited)
 // intensity, not a sum of pixels. `limit`: of the diffraction limit.
+// The PSF's discrete spectrum (the unnormalised OTF on the FFT grid; `limit`:
+// of the diffraction-limited PSF), shared by the MTF and encircled energy.
+ComplexGrid psfSpectrum(const Psf& psf, bool limit = false);
 double encircledEnergy(const Psf& psf, double radiusMm, Vec2d centreMm = {}, bool limit = false);
 // The same at many radii (one transform).
 std::vector<double> encircledEnergy(const Psf& psf, const std::vector<double>& radiiMm, Vec2d centreMm = {},
