@@ -2,6 +2,12 @@
 
 namespace lensrt {
 
+// Each model's entry, from its own file.
+CameraModelInfo pinholeModel();
+CameraModelInfo thinLensModel();
+CameraModelInfo thickLensModel();
+CameraModelInfo fullLensModel();
+
 const std::vector<CameraModelInfo>& cameraModels() {
   static const std::vector<CameraModelInfo> models{pinholeModel(), thinLensModel(), thickLensModel(),
                                                    fullLensModel()};

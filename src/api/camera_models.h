@@ -1,7 +1,8 @@
 // The camera models: the registry that `render`'s --camera, `compare`'s four
 // renders, the report and Python read. Each model's file
 // (api/<name>_model.cpp) holds its create function from the settings every
-// model shares (CameraBuild, made by api/camera_factory.h's makeCamera).
+// model shares (CameraBuild, made by api/camera_factory.h's makeCamera) and
+// the rows of the option table only it takes.
 #pragma once
 
 #include <memory>
@@ -11,6 +12,7 @@
 
 #include "api/camera_spec.h"
 #include "api/flare_spec.h"
+#include "api/option_table.h"
 #include "camera/aperture.h"
 #include "camera/camera.h"
 #include "camera/exposure.h"
@@ -50,17 +52,13 @@ struct CameraModelInfo {
   std::string description;  // one line for help and reports
   bool needsLens = false;   // refuses to be made without --lens
   std::unique_ptr<Camera> (*create)(const CameraBuild& build) = nullptr;
+  // Appends the rows of the option table that only this model takes; may be null.
+  void (*addRows)(std::vector<Option>& table) = nullptr;
 };
 
 // In the order `compare` renders them: the full lens, the reference, last.
 const std::vector<CameraModelInfo>& cameraModels();
 const CameraModelInfo& cameraModel(CameraModel model);
 const std::string& cameraModelName(CameraModel model);
-
-// Each model's entry, from its own file.
-CameraModelInfo pinholeModel();
-CameraModelInfo thinLensModel();
-CameraModelInfo thickLensModel();
-CameraModelInfo fullLensModel();
 
 }  // namespace lensrt

@@ -15,11 +15,11 @@
 
 namespace lensrt {
 
-class Cluster;
+class MpiJob;
 
 struct CommandContext {
   std::string commandLine;     // the whole invocation, recorded in output metadata
-  Cluster* cluster = nullptr;  // the MPI job (owned by main), never null once main runs
+  MpiJob* mpi = nullptr;  // the MPI job (owned by main), never null once main runs
 };
 
 // Returns the process exit status. Bad input is reported by throwing

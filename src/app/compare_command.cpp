@@ -21,9 +21,9 @@
 #include "api/text_file.h"
 #include "app/command.h"
 #include "app/option_flags.h"
-#include "cluster/cluster.h"
-#include "cluster/distributed_render.h"
-#include "cluster/job_on_ranks.h"
+#include "run/mpi_job.h"
+#include "run/distributed_render.h"
+#include "run/job_on_ranks.h"
 #include "core/error.h"
 #include "image/contact_sheet.h"
 #include "image/heatmap.h"
@@ -109,8 +109,8 @@ std::string sppLabel(const RenderOutput& out) {
 int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   // Under MPI every rank renders each model (rank 0 handing out strips);
   // rank 0 alone speaks and writes the directory.
-  const Cluster& cluster = *context.cluster;
-  const bool leader = cluster.isMain();
+  const MpiJob& mpi = *context.mpi;
+  const bool leader = mpi.isMain();
   CompareArgs args = givenArgs;
   if (!leader) args.quiet = true;
   const RenderSpec& spec = args.spec;
@@ -162,11 +162,11 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   }
   std::vector<std::string> modelNames;
   for (const CameraModelInfo& model : cameraModels()) modelNames.push_back(model.name);
-  if (cluster.size() > 1) {
+  if (mpi.size() > 1) {
     // The full lens's identity covers the scene, the lens and the settings.
-    if (const auto failure = setUpTogether(*context.cluster, spec.scene.file, shots.back()->identity)) {
+    if (const auto failure = setUpTogether(*context.mpi, spec.scene.file, shots.back()->identity)) {
       if (leader)
-        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, mpi.size(),
                    failure->line);
       return failure->status;
     }
@@ -178,7 +178,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     if (!args.quiet)
       fmt::print(stderr, "lensrt: compare: {} ({}/{})\n", shots[i]->camera->describe(), i + 1,
                  modelNames.size());
-    results.push_back(renderOnRanks(job, *shots[i]->camera, shots[i]->settings, args.quiet, cluster));
+    results.push_back(renderOnRanks(job, *shots[i]->camera, shots[i]->settings, args.quiet, mpi));
     if (!leader) continue;
     writeImage(dir / (std::string(modelNames[i]) + ".exr"), results.back().output.image,
                plan.finish(results.back(), *shots[i], context.commandLine, warnings));

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/command.h"
-#include "cluster/cluster.h"
+#include "run/mpi_job.h"
 #include "core/error.h"
 #include "core/leak_check.h"
 
@@ -79,11 +79,11 @@ int run(int argc, char** argv) {
       "lensrt: a path tracer that renders glTF scenes through real camera optics.\n"
       "Example: lensrt render scenes/dof_row.gltf --spp 64 -o out/dof_row.exr",
       "lensrt"};
-  lensrt::Cluster cluster(argc, argv);
+  lensrt::MpiJob mpi(argc, argv);
   app.set_version_flag("--version", std::string(LENSRT_VERSION) +
-                                        (lensrt::Cluster::builtWithMpi() ? " (MPI: yes)" : " (MPI: no)"));
+                                        (lensrt::MpiJob::builtWithMpi() ? " (MPI: yes)" : " (MPI: no)"));
   app.require_subcommand(1);
-  const lensrt::CommandContext context{joinCommandLine(argc, argv), &cluster};
+  const lensrt::CommandContext context{joinCommandLine(argc, argv), &mpi};
 
   std::vector<std::pair<const CLI::App*, lensrt::CommandAction>> commands;
   const auto add = [&](auto registerFn) {
@@ -113,7 +113,7 @@ int run(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // Under MPI every rank parses the same command line: rank 0 alone speaks.
-    if (!cluster.isMain()) return e.get_exit_code() == 0 ? 0 : 2;
+    if (!mpi.isMain()) return e.get_exit_code() == 0 ? 0 : 2;
     if (dynamic_cast<const CLI::CallForHelp*>(&e) || dynamic_cast<const CLI::CallForAllHelp*>(&e) ||
         dynamic_cast<const CLI::CallForVersion*>(&e))
       return app.exit(e);
@@ -125,34 +125,34 @@ int run(int argc, char** argv) {
     return 2;
   }
 
-  if (!cluster.unsupportedLaunch().empty()) {
-    if (cluster.isMain()) fmt::print(stderr, "lensrt: error: {}\n", cluster.unsupportedLaunch());
+  if (!mpi.unsupportedLaunch().empty()) {
+    if (mpi.isMain()) fmt::print(stderr, "lensrt: error: {}\n", mpi.unsupportedLaunch());
     return 2;
   }
   // `render` and `compare` are shared between the ranks of an MPI job; other
   // commands run on rank 0 alone.
   const bool shared =
-      cluster.size() > 1 && std::any_of(commands.begin(), commands.end(), [](const auto& command) {
+      mpi.size() > 1 && std::any_of(commands.begin(), commands.end(), [](const auto& command) {
         return command.first->parsed() &&
                (command.first->get_name() == "render" || command.first->get_name() == "compare");
       });
-  if (cluster.size() > 1 && !shared && !cluster.isMain()) return 0;
+  if (mpi.size() > 1 && !shared && !mpi.isMain()) return 0;
   // One error line. In a shared render, a rank failing in its set-up (scene,
   // camera) waits for the others to get there, so that the job reports the
   // lowest failing rank's error once; after the set-up it ends the job.
   const auto fail = [&](int status, const std::string& line) {
-    if (shared && !cluster.agreed()) {
-      const auto failure = cluster.agree(lensrt::Cluster::Failure{cluster.rank(), status, line});
-      if (cluster.isMain())
+    if (shared && !mpi.agreed()) {
+      const auto failure = mpi.agree(lensrt::MpiJob::Failure{mpi.rank(), status, line});
+      if (mpi.isMain())
         fmt::print(stderr, "lensrt: error: {}{}\n",
-                   failure->rank == 0 ? "" : fmt::format("rank {} of {}: ", failure->rank, cluster.size()),
+                   failure->rank == 0 ? "" : fmt::format("rank {} of {}: ", failure->rank, mpi.size()),
                    failure->line);
       return failure->status;
     }
     if (shared) {
-      fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", cluster.rank(), cluster.size(), line);
+      fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", mpi.rank(), mpi.size(), line);
       std::fflush(stderr);
-      cluster.abort(status);
+      mpi.abort(status);
     }
     fmt::print(stderr, "lensrt: error: {}\n", line);
     return status;

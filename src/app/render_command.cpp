@@ -10,9 +10,9 @@
 #include "app/frame_sequence.h"
 #include "app/option_checks.h"
 #include "app/option_flags.h"
-#include "cluster/cluster.h"
-#include "cluster/render_sequence.h"
-#include "cluster/render_to_file.h"
+#include "run/mpi_job.h"
+#include "run/render_sequence.h"
+#include "run/render_to_file.h"
 #include "core/error.h"
 
 namespace lensrt {
@@ -30,8 +30,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   if (!args.ocioDisplay.empty() || !args.ocioView.empty())
     job.display = DisplayTransform{args.ocioDisplay, args.ocioView};
   job.commandLine = context.commandLine;
-  if (context.cluster->isMain()) args.flags->warnUnused(job.spec, job.quiet);
-  if (args.frames.empty()) return renderToFile(job, *context.cluster);
+  if (context.mpi->isMain()) args.flags->warnUnused(job.spec, job.quiet);
+  if (args.frames.empty()) return renderToFile(job, *context.mpi);
   // A sequence: each frame is the render `--frame N` gives, to its own file.
   const FrameRange range = parseFrames(args.frames);
   if (job.spec.time.seconds || job.spec.time.frame)
@@ -41,7 +41,7 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
   std::vector<SequenceFrame> frames;  // the output's pattern checked before any work
   for (int f = range.first; f <= range.last; f += range.step)
     frames.push_back({double(f) / job.spec.time.fps, frameFileName(job.output, f)});
-  return renderSequence(job, frames, *context.cluster);
+  return renderSequence(job, frames, *context.mpi);
 }
 
 }  // namespace

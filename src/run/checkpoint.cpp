@@ -1,4 +1,4 @@
-#include "cluster/checkpoint.h"
+#include "run/checkpoint.h"
 
 #include <fstream>
 #include <span>

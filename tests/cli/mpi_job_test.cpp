@@ -1,6 +1,6 @@
 // How lensrt reads the MPI launcher's environment: which processes belong to
 // a job, and the error of a build without MPI started as several processes.
-#include "cluster/cluster.h"
+#include "run/mpi_job.h"
 
 #include <gtest/gtest.h>
 
@@ -10,14 +10,14 @@
 namespace lensrt {
 namespace {
 
-std::optional<Cluster::Launch> launchWith(const std::map<std::string, std::string>& env) {
-  return Cluster::launch([&](const char* name) -> const char* {
+std::optional<MpiJob::Launch> launchWith(const std::map<std::string, std::string>& env) {
+  return MpiJob::launch([&](const char* name) -> const char* {
     const auto it = env.find(name);
     return it == env.end() ? nullptr : it->second.c_str();
   });
 }
 
-TEST(Cluster, ReadsEachLaunchersSizeAndRank) {
+TEST(MpiJob, ReadsEachLaunchersSizeAndRank) {
   EXPECT_FALSE(launchWith({}));
   // A Slurm allocation without srun's PMIx is not a launch.
   EXPECT_FALSE(launchWith({{"SLURM_NTASKS", "4"}}));
@@ -42,9 +42,9 @@ TEST(Cluster, ReadsEachLaunchersSizeAndRank) {
   EXPECT_FALSE(launchWith({{"PMI_RANK", "-1"}}));
 }
 
-TEST(Cluster, ABuildWithoutMpiRefusesAJobOfSeveralProcesses) {
+TEST(MpiJob, ABuildWithoutMpiRefusesAJobOfSeveralProcesses) {
   const auto refusal = [](int size, int rank, bool withMpi) {
-    return Cluster::refusal(Cluster::Launch{size, rank}, withMpi);
+    return MpiJob::refusal(MpiJob::Launch{size, rank}, withMpi);
   };
   EXPECT_NE(refusal(2, 1, false)
                 .find("started as one of 2 processes of an MPI job, but this lensrt was built "
@@ -55,7 +55,7 @@ TEST(Cluster, ABuildWithoutMpiRefusesAJobOfSeveralProcesses) {
   // A job of one, no launcher, or a build with MPI: nothing to refuse.
   EXPECT_EQ(refusal(1, 0, false), "");
   EXPECT_EQ(refusal(0, 0, false), "");
-  EXPECT_EQ(Cluster::refusal(std::nullopt, false), "");
+  EXPECT_EQ(MpiJob::refusal(std::nullopt, false), "");
   EXPECT_EQ(refusal(4, 2, true), "");
 }
 

@@ -10,15 +10,15 @@
 
 namespace lensrt {
 
-class Cluster {
+class MpiJob {
  public:
-  Cluster(int& argc, char**& argv);
+  MpiJob(int& argc, char**& argv);
   // A job of one process, whatever started this one: a rank's own part of a
   // job whose ranks work apart (whole frames of --frames).
-  Cluster() = default;
-  ~Cluster();
-  Cluster(const Cluster&) = delete;
-  Cluster& operator=(const Cluster&) = delete;
+  MpiJob() = default;
+  ~MpiJob();
+  MpiJob(const MpiJob&) = delete;
+  MpiJob& operator=(const MpiJob&) = delete;
 
   static bool builtWithMpi();
 

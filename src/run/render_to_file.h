@@ -11,7 +11,7 @@
 
 #include "api/render_job.h"
 #include "api/render_spec.h"
-#include "cluster/cluster.h"
+#include "run/mpi_job.h"
 #include "image/preview_values.h"
 #include "render/pixel_region.h"
 #include "render/renderer.h"
@@ -35,6 +35,6 @@ struct FileRender {
 // Runs it; returns the exit status (0, or 128 + the signal that stopped it).
 // Throws UsageError and InputError for bad settings and files, before any
 // rendering wherever they can be found before it.
-int renderToFile(const FileRender& job, Cluster& cluster);
+int renderToFile(const FileRender& job, MpiJob& mpi);
 
 }  // namespace lensrt

@@ -1,4 +1,4 @@
-#include "cluster/render_to_file.h"
+#include "run/render_to_file.h"
 
 #include <fmt/core.h>
 
@@ -14,19 +14,19 @@
 #include "api/option_table.h"
 #include "api/output_file.h"
 #include "api/render_plan.h"
-#include "cluster/checkpoint.h"
-#include "cluster/distributed_render.h"
-#include "cluster/interrupt.h"
+#include "run/checkpoint.h"
+#include "run/distributed_render.h"
+#include "run/interrupt.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "image/spp_channel.h"
 #include "render/progress.h"
 
 namespace lensrt {
-int renderToFile(const FileRender& givenJob, Cluster& cluster) {
+int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
   // Under MPI, rank 0 alone reads and writes the output and speaks; the
   // other ranks load the scene, make the camera and render what it sends.
-  const bool shared = cluster.size() > 1, leader = cluster.isMain();
+  const bool shared = mpi.size() > 1, leader = mpi.isMain();
   FileRender args = givenJob;
   if (!leader) args.quiet = true;
   // 1. Options.
@@ -95,16 +95,16 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   for (const std::string& message : held) print(message);
   if (shared) {
     // Every rank is set up: go on together, or stop together with the first error.
-    if (const auto failure = setUpTogether(cluster, spec.scene.file, identity)) {
+    if (const auto failure = setUpTogether(mpi, spec.scene.file, identity)) {
       if (leader)
-        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, mpi.size(),
                    failure->line);
       return failure->status;
     }
   }
   if (!leader) {
     const InterruptHandler interrupt;
-    workForMain(cluster, camera, job.integrator(), settings, [&] { return interrupt.signal(); });
+    workForMain(mpi, camera, job.integrator(), settings, [&] { return interrupt.signal(); });
     return interrupt.signal() ? interrupt.exitStatus() : 0;
   }
   FilmState& state = *leaderState;
@@ -117,7 +117,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
   // The metadata of an image to write; with --noise on, the sensor reads it out first.
   const auto metadataOf = [&](RenderJobResult& r) {
     ImageMetadata m = plan.finish(r, plan.shot(), args.commandLine, warnings);
-    if (shared) m["lensrt:mpi_ranks"] = std::to_string(cluster.size());
+    if (shared) m["lensrt:mpi_ranks"] = std::to_string(mpi.size());
     if (gather.bytes > 0) {
       m["lensrt:gather_seconds"] = fmt::format("{:.3f}", gather.seconds);
       m["lensrt:gather_bytes"] = std::to_string(gather.bytes);
@@ -145,7 +145,7 @@ int renderToFile(const FileRender& givenJob, Cluster& cluster) {
       const int remaining = std::max(0, settings.samplesPerPixel - state.samplesDone());
       Progress progress(region.pixelCount() * std::uint64_t(remaining),
                         Progress::styleFor(stderr, args.quiet));
-      finished = renderAcrossRanks(cluster, camera, job.integrator(), settings, state, control, &progress,
+      finished = renderAcrossRanks(mpi, camera, job.integrator(), settings, state, control, &progress,
                                    rankSignal, &gather);
     }
     result.output = renderOutput(camera, state, settings.flareLight.get());

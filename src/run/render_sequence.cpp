@@ -1,4 +1,4 @@
-#include "cluster/render_sequence.h"
+#include "run/render_sequence.h"
 
 #include <fmt/core.h>
 
@@ -10,8 +10,8 @@
 
 namespace lensrt {
 
-int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& frames, Cluster& cluster) {
-  const bool leader = cluster.isMain();
+int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& frames, MpiJob& mpi) {
+  const bool leader = mpi.isMain();
   const bool quiet = job.quiet || !leader;
   // The file's warnings, each once for the whole sequence.
   Warnings warnings([&](const std::string& message) {
@@ -20,18 +20,18 @@ int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& fram
   const SceneOptions options = sceneOptions(job.spec, quiet);
   SceneSequence sequence(SceneLoadOptions{options.scene, options.sceneIndex, options.limits, options.time},
                          warnings);
-  if (cluster.size() > 1) {
+  if (mpi.size() > 1) {
     // Every rank has read the file: go on together, or stop together with the first error.
-    if (const auto failure = cluster.agree(std::nullopt)) {
+    if (const auto failure = mpi.agree(std::nullopt)) {
       if (leader)
-        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, cluster.size(),
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, mpi.size(),
                    failure->line);
       return failure->status;
     }
   }
-  Cluster alone;  // each frame is one process's render
-  const auto ranks = static_cast<std::size_t>(cluster.size()),
-             rank = static_cast<std::size_t>(cluster.rank());
+  MpiJob alone;  // each frame is one process's render
+  const auto ranks = static_cast<std::size_t>(mpi.size()),
+             rank = static_cast<std::size_t>(mpi.rank());
   for (std::size_t i = rank; i < frames.size(); i += ranks) {
     FileRender frame = job;
     frame.quiet = quiet;
@@ -42,7 +42,7 @@ int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& fram
     if (const int status = renderToFile(frame, alone); status != 0) return status;
     // The other ranks render quietly (one progress bar), but say what they wrote.
     if (!leader && !job.quiet)
-      fmt::print(stderr, "lensrt: rank {} of {} wrote {}\n", cluster.rank(), cluster.size(), frame.output);
+      fmt::print(stderr, "lensrt: rank {} of {} wrote {}\n", mpi.rank(), mpi.size(), frame.output);
   }
   return 0;
 }

@@ -1,4 +1,4 @@
-#include "cluster/cluster.h"
+#include "run/mpi_job.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -22,11 +22,11 @@ int number(const std::function<const char*(const char*)>& getenv, const char* na
 
 }  // namespace
 
-bool Cluster::builtWithMpi() {
+bool MpiJob::builtWithMpi() {
   return LENSRT_WITH_MPI != 0;
 }
 
-std::string Cluster::refusal(const std::optional<Launch>& l, bool withMpi) {
+std::string MpiJob::refusal(const std::optional<Launch>& l, bool withMpi) {
   if (withMpi || !l || (l->size <= 1 && l->rank == 0)) return {};
   return (l->size > 1 ? "started as one of " + std::to_string(l->size) + " processes"
                       : "started as process " + std::to_string(l->rank)) +
@@ -34,7 +34,7 @@ std::string Cluster::refusal(const std::optional<Launch>& l, bool withMpi) {
          "image alone (install libopenmpi-dev and build again, or run lensrt without mpirun)";
 }
 
-std::optional<Cluster::Launch> Cluster::launch(const std::function<const char*(const char*)>& getenv) {
+std::optional<MpiJob::Launch> MpiJob::launch(const std::function<const char*(const char*)>& getenv) {
   struct Launcher {
     const char* size;
     const char* rank;
@@ -55,7 +55,7 @@ std::optional<Cluster::Launch> Cluster::launch(const std::function<const char*(c
 
 #if LENSRT_WITH_MPI
 
-Cluster::Cluster(int& argc, char**& argv) {
+MpiJob::MpiJob(int& argc, char**& argv) {
   if (!launch(std::getenv)) return;
   // Only the main thread calls MPI (the render threads never do).
   int provided = 0;
@@ -65,11 +65,11 @@ Cluster::Cluster(int& argc, char**& argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
-Cluster::~Cluster() {
+MpiJob::~MpiJob() {
   if (initialized_) MPI_Finalize();
 }
 
-std::optional<Cluster::Failure> Cluster::agree(const std::optional<Failure>& mine) {
+std::optional<MpiJob::Failure> MpiJob::agree(const std::optional<Failure>& mine) {
   agreed_ = true;
   if (size_ == 1) return mine;
   const int candidate = mine ? rank_ : size_;
@@ -88,7 +88,7 @@ std::optional<Cluster::Failure> Cluster::agree(const std::optional<Failure>& min
   return failure;
 }
 
-std::string Cluster::shareFromMain(const std::string& text) const {
+std::string MpiJob::shareFromMain(const std::string& text) const {
   if (size_ == 1) return text;
   int length = int(text.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -97,30 +97,30 @@ std::string Cluster::shareFromMain(const std::string& text) const {
   return shared;
 }
 
-void Cluster::abort(int status) const {
+void MpiJob::abort(int status) const {
   if (initialized_) MPI_Abort(MPI_COMM_WORLD, status);
   std::exit(status);
 }
 
 #else
 
-Cluster::Cluster(int&, char**&) {
+MpiJob::MpiJob(int&, char**&) {
   const std::optional<Launch> l = launch(std::getenv);
   unsupportedLaunch_ = refusal(l, false);
   if (!unsupportedLaunch_.empty()) rank_ = l->rank;  // rank 0 alone says it
 }
-Cluster::~Cluster() = default;
+MpiJob::~MpiJob() = default;
 
-std::optional<Cluster::Failure> Cluster::agree(const std::optional<Failure>& mine) {
+std::optional<MpiJob::Failure> MpiJob::agree(const std::optional<Failure>& mine) {
   agreed_ = true;
   return mine;
 }
 
-std::string Cluster::shareFromMain(const std::string& text) const {
+std::string MpiJob::shareFromMain(const std::string& text) const {
   return text;
 }
 
-void Cluster::abort(int status) const {
+void MpiJob::abort(int status) const {
   std::exit(status);
 }
 

@@ -1,4 +1,4 @@
-#include "cluster/interrupt.h"
+#include "run/interrupt.h"
 
 #include <unistd.h>
 

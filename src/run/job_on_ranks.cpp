@@ -1,18 +1,18 @@
-#include "cluster/job_on_ranks.h"
+#include "run/job_on_ranks.h"
 
 #include <chrono>
 
-#include "cluster/distributed_render.h"
+#include "run/distributed_render.h"
 #include "render/flare_light_pass.h"
 #include "render/progress.h"
 
 namespace lensrt {
 
 RenderJobResult renderOnRanks(const RenderJob& job, const Camera& camera, const RenderSettings& settings,
-                              bool quiet, const Cluster& cluster) {
-  if (cluster.size() == 1) return job.render(camera, settings, quiet);
-  if (!cluster.isMain()) {
-    workForMain(cluster, camera, job.integrator(), settings, [] { return 0; });
+                              bool quiet, const MpiJob& mpi) {
+  if (mpi.size() == 1) return job.render(camera, settings, quiet);
+  if (!mpi.isMain()) {
+    workForMain(mpi, camera, job.integrator(), settings, [] { return 0; });
     return {};
   }
   const auto start = std::chrono::steady_clock::now();
@@ -22,7 +22,7 @@ RenderJobResult renderOnRanks(const RenderJob& job, const Camera& camera, const 
     Progress progress(state.region().pixelCount() * std::uint64_t(settings.samplesPerPixel),
                       Progress::styleFor(stderr, quiet));
     int signal = 0;
-    renderAcrossRanks(cluster, camera, job.integrator(), settings, state, PassControl{}, &progress, signal);
+    renderAcrossRanks(mpi, camera, job.integrator(), settings, state, PassControl{}, &progress, signal);
   }
   RenderJobResult result;
   result.output = renderOutput(camera, state, settings.flareLight.get());

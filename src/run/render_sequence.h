@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "cluster/cluster.h"
-#include "cluster/render_to_file.h"
+#include "run/mpi_job.h"
+#include "run/render_to_file.h"
 
 namespace lensrt {
 
@@ -20,6 +20,6 @@ struct SequenceFrame {
 
 // Renders `frames` of `job` (whose output and time each frame replaces).
 // Returns the exit status: 0, or that of the first frame that did not finish.
-int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& frames, Cluster& cluster);
+int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& frames, MpiJob& mpi);
 
 }  // namespace lensrt

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "camera/camera.h"
-#include "cluster/cluster.h"
+#include "run/mpi_job.h"
 #include "image/image.h"
 #include "render/film_state.h"
 #include "render/integrator.h"
@@ -23,13 +23,13 @@
 namespace lensrt {
 
 // Collective, called by every rank whose set-up (scene, camera) succeeded; a
-// rank whose set-up failed calls cluster.agree with its failure instead.
+// rank whose set-up failed calls mpi.agree with its failure instead.
 // Waits for the others, then checks that every rank renders what rank 0
 // renders (`identity`: scene files, camera, settings, seed), so that a node
 // with another copy of the scene or the lens, or another working directory,
 // fails the job instead of painting its strips from another render. Returns
 // the lowest failing rank's failure, the same on every rank.
-std::optional<Cluster::Failure> setUpTogether(Cluster& cluster, const std::string& scene,
+std::optional<MpiJob::Failure> setUpTogether(MpiJob& mpi, const std::string& scene,
                                               const ImageMetadata& identity);
 
 // What sharing cost rank 0 (tools/bench-scaleout reports it): the time its
@@ -44,13 +44,13 @@ struct GatherCost {
 // with every rank's help. Stops early (returning false) when `control` asks
 // to or a rank reports a signal; `signal` then holds the first one reported
 // (0 when none). Ends the other ranks' workForMain in both cases.
-bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integrator& integrator,
+bool renderAcrossRanks(const MpiJob& mpi, const Camera& camera, const Integrator& integrator,
                        const RenderSettings& settings, FilmState& state, const PassControl& control,
                        Progress* progress, int& signal, GatherCost* cost = nullptr);
 
 // The other ranks: render the strips rank 0 sends until it says the job is
 // over. `signal()` (0: none) is reported to rank 0 with each strip.
-void workForMain(const Cluster& cluster, const Camera& camera, const Integrator& integrator,
+void workForMain(const MpiJob& mpi, const Camera& camera, const Integrator& integrator,
                  const RenderSettings& settings, const std::function<int()>& signal);
 
 }  // namespace lensrt

@@ -1,4 +1,4 @@
-#include "cluster/distributed_render.h"
+#include "run/distributed_render.h"
 
 #include <fmt/core.h>
 
@@ -44,15 +44,15 @@ ImageMetadata unpackIdentity(const std::string& text) {
 
 }  // namespace
 
-std::optional<Cluster::Failure> setUpTogether(Cluster& cluster, const std::string& scene,
+std::optional<MpiJob::Failure> setUpTogether(MpiJob& mpi, const std::string& scene,
                                               const ImageMetadata& identity) {
-  if (auto failure = cluster.agree(std::nullopt)) return failure;
-  const ImageMetadata main = unpackIdentity(cluster.shareFromMain(packIdentity(identity)));
-  std::optional<Cluster::Failure> mine;
+  if (auto failure = mpi.agree(std::nullopt)) return failure;
+  const ImageMetadata main = unpackIdentity(mpi.shareFromMain(packIdentity(identity)));
+  std::optional<MpiJob::Failure> mine;
   if (const std::string diff = renderIdentityDifference(identity, main); !diff.empty())
-    mine = Cluster::Failure{cluster.rank(), 1,
+    mine = MpiJob::Failure{mpi.rank(), 1,
                             fmt::format("{}: this rank's render differs from rank 0's: {}", scene, diff)};
-  return cluster.agree(mine);
+  return mpi.agree(mine);
 }
 
 #if LENSRT_WITH_MPI
@@ -120,7 +120,7 @@ void renderPart(const Camera& camera, const Integrator& integrator, const Render
 
 }  // namespace
 
-bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integrator& integrator,
+bool renderAcrossRanks(const MpiJob& mpi, const Camera& camera, const Integrator& integrator,
                        const RenderSettings& settings, FilmState& state, const PassControl& control,
                        Progress* progress, int& signal, GatherCost* cost) {
   GatherCost spent;
@@ -213,14 +213,14 @@ bool renderAcrossRanks(const Cluster& cluster, const Camera& camera, const Integ
   // Every other rank ends up waiting for work: tell each the job is over.
   int outstanding = 0;
   std::atomic<int> none{int(strips.size())};
-  while (int(waiting.size()) < cluster.size() - 1)
+  while (int(waiting.size()) < mpi.size() - 1)
     if (!serve(none, target, outstanding)) std::this_thread::sleep_for(kPoll);
   for (const int rank : waiting) MPI_Send(nullptr, 0, MPI_BYTE, rank, kTagEnd, MPI_COMM_WORLD);
   if (cost) *cost = spent;
   return finished;
 }
 
-void workForMain(const Cluster&, const Camera& camera, const Integrator& integrator,
+void workForMain(const MpiJob&, const Camera& camera, const Integrator& integrator,
                  const RenderSettings& settings, const std::function<int()>& signal) {
   std::vector<std::byte> done;
   while (true) {
@@ -243,12 +243,12 @@ void workForMain(const Cluster&, const Camera& camera, const Integrator& integra
 
 #else
 
-bool renderAcrossRanks(const Cluster&, const Camera&, const Integrator&, const RenderSettings&, FilmState&,
+bool renderAcrossRanks(const MpiJob&, const Camera&, const Integrator&, const RenderSettings&, FilmState&,
                        const PassControl&, Progress*, int&, GatherCost*) {
   throw std::logic_error("lensrt was built without MPI");
 }
 
-void workForMain(const Cluster&, const Camera&, const Integrator&, const RenderSettings&,
+void workForMain(const MpiJob&, const Camera&, const Integrator&, const RenderSettings&,
                  const std::function<int()>&) {
   throw std::logic_error("lensrt was built without MPI");
 }
