@@ -51,8 +51,6 @@ Image cameraChannels(const Image& image, const std::optional<SensorReadout>& rea
 }  // namespace
 
 void checkRawOutput(const RawOutputOptions& o) {
-  if (!parseCfaPattern(o.cfa))
-    throw UsageError("--cfa", "expected RGGB, BGGR, GRBG or GBRG, got '" + o.cfa + "'");
   if (o.file.empty()) return;
   if (std::filesystem::path(o.file).extension() != ".dng")
     throw UsageError("--raw", "expected a .dng file, got '" + o.file + "'");
@@ -63,7 +61,7 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
                     const std::optional<SensorReadout>& readout, const Camera& camera,
                     const std::optional<ColorSpaceId>& outputSpace, const Exposure& exposure,
                     const std::optional<CameraRgb>& cameraRgb) {
-  const CfaPattern pattern = *parseCfaPattern(o.cfa);
+  const CfaPattern& pattern = o.cfa;
   std::optional<Image> inCamera;
   if (cameraRgb) inCamera = cameraChannels(image, readout, *cameraRgb);
   const Image& sites = inCamera ? *inCamera : image;

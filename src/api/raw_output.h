@@ -12,15 +12,16 @@
 #include "camera/exposure.h"
 #include "color/color_space.h"
 #include "image/image.h"
+#include "sensor/mosaic.h"
 
 namespace lensrt {
 
 struct RawOutputOptions {
-  std::string file;          // empty: no raw file
-  std::string cfa = "RGGB";  // RGGB, BGGR, GRBG or GBRG
+  std::string file;  // empty: no raw file
+  CfaPattern cfa;    // RGGB unless --cfa says otherwise
 };
 
-// A .dng name and a known pattern (UsageError naming --raw or --cfa); the
+// A .dng name (UsageError naming --raw); the
 // folder is created and must take a new file (InputError), before any work.
 void checkRawOutput(const RawOutputOptions& options);
 

@@ -61,11 +61,11 @@ void addOutputRows(std::vector<Option>& table) {
                    "the raw file's colour filter pattern: RGGB (default), BGGR, GRBG or GBRG", "BGGR",
                    PyValue::Text);
     o.set = [](RenderSpec& s, const std::string& text) {
-      if (!parseCfaPattern(text))
-        throw UsageError("--cfa", "expected RGGB, BGGR, GRBG or GBRG, got '" + text + "'");
-      s.raw.cfa = text;
+      const std::optional<CfaPattern> pattern = parseCfaPattern(text);
+      if (!pattern) throw UsageError("--cfa", "expected RGGB, BGGR, GRBG or GBRG, got '" + text + "'");
+      s.raw.cfa = *pattern;
     };
-    o.show = [](const RenderSpec& s) { return s.raw.cfa; };
+    o.show = [](const RenderSpec& s) { return s.raw.cfa.name; };
     o.commands = kRenderCommand;
     o.identity = Identity::Output;
     o.applies = [](const RenderSpec& s) { return !s.raw.file.empty(); };
