@@ -1,7 +1,6 @@
 #include "api/aperture_mask_file.h"
 
 #include <fmt/format.h>
-#include <tiny_gltf.h>
 
 #include <cstdint>
 #include <cstring>
@@ -12,7 +11,8 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/png_allocation.h"
+#include "image/png_allocation.h"
+#include "image/stb_io.h"
 
 namespace lensrt {
 namespace {
@@ -47,40 +47,32 @@ ApertureMask decodeApertureMask(std::string_view bytes, const std::string& name)
                                        size->second, kMaxSide, kMaxSide));
   if (const std::optional<std::string> bomb = pngAllocationProblem(data, bytes.size()))
     throw InputError(name, "the aperture mask: " + *bomb);
-  tinygltf::Image image;
-  std::string err, warn;
-  // The decoder of the glTF textures (stb_image): errors come back as text.
-  const bool ok =
-      !bytes.empty() && tinygltf::LoadImageData(&image, 0, &err, &warn, 0, 0,
-                                                reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                static_cast<int>(bytes.size()), nullptr);
-  const int channels = image.component;
-  const std::size_t bytesPerValue = image.bits == 16 ? 2 : 1;
-  if (!ok || image.width <= 0 || image.height <= 0 || channels < 1 || channels > 4 ||
-      (image.bits != 8 && image.bits != 16) ||
-      image.image.size() <
-          std::size_t(image.width) * std::size_t(image.height) * std::size_t(channels) * bytesPerValue)
+  // The decoder of the glTF textures (image/stb_io.h).
+  const std::optional<StbCodes> image = decodeStbCodes(bytes);
+  const int channels = image ? image->components : 0;
+  const std::size_t bytesPerValue = image && image->bits == 16 ? 2 : 1;
+  if (!image || channels < 1 || channels > 4)
     throw InputError(name, "cannot decode the aperture mask (expected a PNG, JPEG, BMP or TGA image)");
-  if (image.width > kMaxSide || image.height > kMaxSide)
-    throw InputError(name, fmt::format("the aperture mask is {}x{}, larger than {}x{}", image.width,
-                                       image.height, kMaxSide, kMaxSide));
+  if (image->width > kMaxSide || image->height > kMaxSide)
+    throw InputError(name, fmt::format("the aperture mask is {}x{}, larger than {}x{}", image->width,
+                                       image->height, kMaxSide, kMaxSide));
   // Grey and grey+alpha images carry grey in channel 0; RGB(A) its mean.
   const int colours = channels >= 3 ? 3 : 1;
-  const double full = image.bits == 16 ? 65535.0 : 255.0;
+  const double full = image->bits == 16 ? 65535.0 : 255.0;
   const auto value = [&](std::size_t i) {
-    if (bytesPerValue == 1) return double(image.image[i]);
+    if (bytesPerValue == 1) return double(image->data[i]);
     std::uint16_t v = 0;  // stb_image keeps 16-bit values in the machine's byte order
-    std::memcpy(&v, &image.image[2 * i], sizeof v);
+    std::memcpy(&v, &image->data[2 * i], sizeof v);
     return double(v);
   };
-  std::vector<float> values(std::size_t(image.width) * std::size_t(image.height));
+  std::vector<float> values(std::size_t(image->width) * std::size_t(image->height));
   for (std::size_t p = 0; p < values.size(); ++p) {
     double sum = 0.0;
     for (int c = 0; c < colours; ++c) sum += value(p * std::size_t(channels) + std::size_t(c));
     values[p] = float(sum / (colours * full));
   }
   try {
-    return ApertureMask(image.width, image.height, std::move(values),
+    return ApertureMask(image->width, image->height, std::move(values),
                         std::filesystem::path(name).filename().string());
   } catch (const std::invalid_argument& e) {
     throw InputError(name, std::string("aperture mask: ") + e.what());

@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/oiio_plugin.h"
-#include "core/plugin_image_formats.h"
 #include "image/cineon.h"
 #include "image/exr_io.h"
+#include "image/oiio_plugin.h"
+#include "image/plugin_image_formats.h"
 #include "image/plugin_input.h"
 #include "image/plugin_output.h"
 #include "image/srgb.h"

@@ -1,4 +1,4 @@
-// Image files read through lensrt's OpenImageIO plugin (core/oiio_plugin.h):
+// Image files read through lensrt's OpenImageIO plugin (image/oiio_plugin.h):
 // WebP, TIFF, JPEG 2000 and DPX recognised by their first bytes, and by
 // their extension the other formats OpenImageIO reads and lensrt's own
 // decoders do not (Cineon, DDS, HEIF/AVIF, SGI, PFM, ...).
@@ -10,9 +10,9 @@
 #include <string>
 #include <string_view>
 
-#include "core/oiio_plugin.h"
-#include "core/plugin_image_formats.h"
 #include "image/image.h"
+#include "image/oiio_plugin.h"
+#include "image/plugin_image_formats.h"
 
 namespace lensrt {
 

@@ -4,8 +4,8 @@
 #include <cctype>
 
 #include "core/error.h"
-#include "core/oiio_plugin.h"
 #include "image/cineon.h"
+#include "image/oiio_plugin.h"
 
 namespace lensrt {
 namespace {

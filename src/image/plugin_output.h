@@ -1,5 +1,5 @@
 // The image files lensrt writes through its OpenImageIO plugin
-// (core/oiio_plugin.h), and how it encodes each. Like the .png/.jpg
+// (image/oiio_plugin.h), and how it encodes each. Like the .png/.jpg
 // previews, R,G,B only (no alpha, no AOVs), display-referred except DPX:
 //   .tif/.tiff   16-bit sRGB (each value clamped to [0,1], the sRGB curve), ZIP
 //   .jp2/.j2k    16-bit sRGB, lossless JPEG 2000 (at least 32x32 pixels)

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/oiio_plugin.h"
+#include "image/oiio_plugin.h"
 #include "image/srgb.h"
 
 namespace lensrt {

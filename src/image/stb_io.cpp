@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/png_allocation.h"
+#include "image/png_allocation.h"
 
 namespace lensrt {
 namespace {
@@ -148,6 +148,28 @@ void checkRadianceRunLengths(std::string_view bytes, const std::string& name) {
   }
 }
 
+std::optional<StbCodes> decodeStbCodes(std::string_view bytes) {
+  if (bytes.empty() || bytes.size() > std::size_t(INT_MAX)) return std::nullopt;
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int length = int(bytes.size());
+  constexpr int kRgba = 4;
+  StbCodes codes;
+  int w = 0, h = 0, c = 0;
+  std::unique_ptr<unsigned char, StbFree> pixels;
+  if (stbi_is_16_bit_from_memory(data, length)) {
+    pixels.reset(reinterpret_cast<unsigned char*>(stbi_load_16_from_memory(data, length, &w, &h, &c, kRgba)));
+    if (pixels) codes.bits = 16;
+  }
+  if (!pixels) pixels.reset(stbi_load_from_memory(data, length, &w, &h, &c, kRgba));
+  if (!pixels || w < 1 || h < 1) return std::nullopt;
+  codes.width = w;
+  codes.height = h;
+  codes.components = kRgba;
+  const std::size_t size = std::size_t(w) * std::size_t(h) * kRgba * std::size_t(codes.bits / 8);
+  codes.data.assign(pixels.get(), pixels.get() + size);
+  return codes;
+}
+
 bool isStbImage(std::string_view bytes) {
   int width = 0, height = 0, channels = 0;
   return bytes.size() <= std::size_t(INT_MAX) &&
@@ -159,7 +181,7 @@ Image decodeStbImage(std::string_view bytes, const std::string& name, std::size_
   if (bytes.size() > std::size_t(INT_MAX)) throw InputError(name, "the image file is larger than 2 GiB");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int length = int(bytes.size());
-  // Before stb_image allocates what a lying PNG claims (core/png_allocation.h).
+  // Before stb_image allocates what a lying PNG claims (image/png_allocation.h).
   if (const std::optional<std::string> problem = pngAllocationProblem(data, bytes.size()))
     throw InputError(name, "cannot decode image: " + *problem);
   int width = 0, height = 0, channels = 0;

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "image/image.h"
 
@@ -25,6 +27,16 @@ std::string encodePreview(const std::string& name, PreviewFormat format, int wid
 // as stored); .hdr files their linear values. Images of more than
 // `maxValues` values are refused before decoding. Throws InputError.
 Image decodeStbImage(std::string_view bytes, const std::string& name, std::size_t maxValues);
+
+// 8- or 16-bit codes as glTF loaders decode textures (tinygltf's
+// LoadImageData): every image expanded to RGBA, 16-bit PNGs kept at 16 bits
+// (two bytes a value, in the machine's order), a Radiance .hdr file tone-
+// mapped to 8 bits by stb_image. nullopt when stb_image cannot decode it.
+struct StbCodes {
+  int width = 0, height = 0, components = 0, bits = 8;
+  std::vector<unsigned char> data;  // row-major, `components` values a pixel
+};
+std::optional<StbCodes> decodeStbCodes(std::string_view bytes);
 
 // True when stb_image recognises `bytes` as one of its formats.
 bool isStbImage(std::string_view bytes);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/oiio_plugin_abi.h"
+#include "image/oiio_plugin_abi.h"
 #include "oiio_plugin/plugin_call.h"
 
 namespace lensrt::oiio {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/oiio_plugin_abi.h"
+#include "image/oiio_plugin_abi.h"
 
 namespace lensrt::oiio {
 

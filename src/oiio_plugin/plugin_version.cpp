@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/oiio_plugin_abi.h"
+#include "image/oiio_plugin_abi.h"
 
 extern "C" {
 

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <utility>
 
-#include "core/oiio_plugin_abi.h"
+#include "image/oiio_plugin_abi.h"
 #include "oiio_plugin/plugin_call.h"
 
 namespace lensrt::oiio {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "core/oiio_plugin_abi.h"
+#include "image/oiio_plugin_abi.h"
 #include "oiio_plugin/plugin_call.h"
 
 namespace lensrt::oiio {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "core/constants.h"
-#include "core/png_allocation.h"
+#include "image/png_allocation.h"
 #include "scene/data_uri.h"
 #include "scene/gltf_values.h"
-#include "scene/texture_decoding.h"
+#include "image/texture_decoding.h"
 
 namespace lensrt::gltf {
 namespace {

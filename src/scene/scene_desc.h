@@ -11,21 +11,9 @@
 #include "core/bounds.h"
 #include "core/transform.h"
 #include "core/vec.h"
+#include "image/texture.h"
 
 namespace lensrt {
-
-// Texels are linear floats, RGBA; colour textures are already decoded from sRGB.
-struct Texture {
-  std::string name;
-  int width = 0;
-  int height = 0;
-  std::vector<Vec4f> texels;  // row-major, row 0 is the top of the image (glTF uv (0,0))
-  bool wrapRepeatS = true;    // false: clamp to edge
-  bool wrapRepeatT = true;
-  bool nearest = false;  // glTF magFilter NEAREST (or minFilter NEAREST* without one); else bilinear
-  bool mirrorS = false;  // glTF MIRRORED_REPEAT (only meaningful with wrapRepeatS)
-  bool mirrorT = false;
-};
 
 // KHR_texture_transform as the 2x3 matrix T * R * S the extension defines:
 // uv' = (m[0] u + m[1] v + m[2], m[3] u + m[4] v + m[5]).

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "core/leak_check.h"
-#include "core/oiio_plugin.h"
+#include "image/oiio_plugin.h"
 
 namespace lensrt::fuzz {
 

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/plugin_image_formats.h"
+#include "image/plugin_image_formats.h"
 #include "image/cineon.h"
 #include "image/image_io.h"
 #include "image/srgb.h"

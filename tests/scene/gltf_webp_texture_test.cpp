@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/oiio_plugin.h"
+#include "image/oiio_plugin.h"
 #include "gltf_test_builder.h"
 #include "oiio_plugin_for_tests.h"
 #include "scene/gltf_loader.h"

@@ -1,7 +1,7 @@
 // A glTF texture image's encoded bytes to linear float RGBA texels: PNG,
 // JPEG and the rest of stb_image's formats through tinygltf's decoder, and
 // WebP (EXT_texture_webp), TIFF, JPEG 2000 and DPX, recognised by their first
-// bytes, through the OpenImageIO plugin (core/oiio_plugin.h).
+// bytes, through the OpenImageIO plugin (image/oiio_plugin.h).
 #pragma once
 
 #include <cstddef>
@@ -12,9 +12,9 @@
 #include <utility>
 #include <variant>
 
-#include "scene/scene_desc.h"
+#include "image/texture.h"
 
-namespace lensrt::gltf {
+namespace lensrt {
 
 // Width and height a PNG, JPEG, WebP or JPEG 2000 header declares, read
 // before a decoder allocates for them; nullopt for other formats and broken
@@ -40,4 +40,4 @@ using TextureSizeCheck = std::function<void(std::uint32_t width, std::uint32_t h
 std::variant<Texture, TextureDecodeFailure> decodeTextureImage(const unsigned char* bytes, std::size_t size,
                                                                bool srgb, const TextureSizeCheck& checkSize);
 
-}  // namespace lensrt::gltf
+}  // namespace lensrt

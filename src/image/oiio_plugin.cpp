@@ -1,4 +1,4 @@
-#include "core/oiio_plugin.h"
+#include "image/oiio_plugin.h"
 
 #include <dlfcn.h>
 

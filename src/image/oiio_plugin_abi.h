@@ -1,7 +1,7 @@
 /* The C interface of lensrt's OpenImageIO plugin (lensrt_oiio.so, built from
  * src/oiio_plugin/). lensrt itself never links OpenImageIO: its ~260 shared
  * libraries cost every process 0.3 s and 135 MB at start. The plugin is
- * dlopen'ed (core/oiio_plugin.h) only when a file's format needs it, and
+ * dlopen'ed (image/oiio_plugin.h) only when a file's format needs it, and
  * speaks plain C so that neither side depends on the other's C++ ABI.
  *
  * Every function but lensrt_oiio_free and lensrt_oiio_last_error returns

@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/oiio_plugin_abi.h"
 #include "core/shared_library.h"
+#include "image/oiio_plugin_abi.h"
 
 namespace lensrt {
 

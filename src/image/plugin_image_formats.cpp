@@ -1,4 +1,4 @@
-#include "core/plugin_image_formats.h"
+#include "image/plugin_image_formats.h"
 
 #include <algorithm>
 #include <cstring>

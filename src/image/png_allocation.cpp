@@ -1,4 +1,4 @@
-#include "core/png_allocation.h"
+#include "image/png_allocation.h"
 
 #include <zlib.h>
 

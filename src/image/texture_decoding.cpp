@@ -1,6 +1,4 @@
-#include "scene/texture_decoding.h"
-
-#include <tiny_gltf.h>
+#include "image/texture_decoding.h"
 
 #include <array>
 #include <cmath>
@@ -8,19 +6,20 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/oiio_plugin.h"
-#include "core/plugin_image_formats.h"
-#include "core/png_allocation.h"
+#include "image/oiio_plugin.h"
+#include "image/plugin_image_formats.h"
+#include "image/png_allocation.h"
+#include "image/stb_io.h"
 
-namespace lensrt::gltf {
+namespace lensrt {
 namespace {
 
 float srgbToLinear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-// Decoded pixels: 8- or 16-bit codes as tinygltf's stb_image wrapper returns
-// them, or floats (codes scaled to [0,1]) from the plugin.
+// Decoded pixels: 8- or 16-bit codes as glTF loaders decode them
+// (image/stb_io.h's decodeStbCodes), or floats (codes scaled to [0,1]) from the plugin.
 struct Pixels {
   int width = 0, height = 0, components = 0, bits = 8;  // bits 32: `floats`
   std::vector<unsigned char> data;
@@ -120,13 +119,12 @@ std::variant<Texture, TextureDecodeFailure> decodeTextureImage(const unsigned ch
                                                                bool srgb, const TextureSizeCheck& checkSize) {
   if (const std::optional<PluginFormat> format = sniffPluginFormat(bytes, size))
     return decodeThroughPlugin(bytes, size, *format, srgb, checkSize);
-  tinygltf::Image decoded;
-  std::string err, warn;
-  // nullptr options: tinygltf's default, which expands to 4 channels.
-  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
-      !tinygltf::LoadImageData(&decoded, 0, &err, &warn, 0, 0, bytes, static_cast<int>(size), nullptr))
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     return TextureDecodeFailure{"could not be decoded", "", ""};
-  Pixels p{decoded.width, decoded.height, decoded.component, decoded.bits, std::move(decoded.image), {}};
+  std::optional<StbCodes> decoded =
+      decodeStbCodes(std::string_view(reinterpret_cast<const char*>(bytes), size));
+  if (!decoded) return TextureDecodeFailure{"could not be decoded", "", ""};
+  Pixels p{decoded->width, decoded->height, decoded->components, decoded->bits, std::move(decoded->data), {}};
   const std::size_t bytesPerChannel = p.bits == 16 ? 2 : 1;
   if (p.width <= 0 || p.height <= 0 || p.components < 1 || p.components > 4 ||
       (p.bits != 8 && p.bits != 16) ||
@@ -137,4 +135,4 @@ std::variant<Texture, TextureDecodeFailure> decodeTextureImage(const unsigned ch
   return toTexture(p, srgb);
 }
 
-}  // namespace lensrt::gltf
+}  // namespace lensrt

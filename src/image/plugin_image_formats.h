@@ -1,5 +1,5 @@
 // The image formats that lensrt decodes through its OpenImageIO plugin
-// (core/oiio_plugin.h) when the bytes come from memory (glTF textures, the
+// (image/oiio_plugin.h) when the bytes come from memory (glTF textures, the
 // image fuzz target): WebP, TIFF, JPEG 2000 and DPX, recognised by their
 // first bytes, never by a name an untrusted file chose. PNG, JPEG and the
 // rest of stb_image's formats stay with stb_image, EXR with OpenEXR.
