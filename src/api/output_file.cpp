@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "image/image_io.h"
+#include "image/output_formats.h"
 
 namespace lensrt {
 namespace {
@@ -77,8 +78,7 @@ std::optional<fs::path> checkOutputFile(const fs::path& out) {
     throw UsageError(
         "-o", (out.extension().empty() ? "'" + out.string() + "' has no image extension"
                                        : "unknown image extension '" + out.extension().string() + "'") +
-                  " (use .exr for the full result; .png, .jpg, .tif, .jp2 or .webp for a preview, .dpx for "
-                  "10-bit log)");
+                  " (" + outputFormatAdvice() + ")");
   checkImageWriter(out);
   const std::optional<fs::path> created = createFolderFor(out);
   const fs::path dir = directoryOf(out);

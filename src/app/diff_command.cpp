@@ -13,6 +13,7 @@
 #include "image/image_diff.h"
 #include "image/image_io.h"
 #include "image/noise_aware_diff.h"
+#include "image/output_formats.h"
 
 namespace lensrt {
 namespace {
@@ -171,12 +172,12 @@ CommandAction addDiffCommand(CLI::App& app, const CommandContext&) {
   sub->add_option(
          "--heatmap", o->comparison.heatmap,
          "Write a false-colour map of the per-pixel max |A-B| (noise-aware: max |t|) with a labelled "
-         "colour bar (.png/.jpg/.exr, or .tif/.jp2/.webp/.dpx)")
+         "colour bar (" +
+             outputExtensionList() + ")")
       ->check(CLI::Validator(
           [](std::string& file) {
-            return isWritableImageExtension(file)
-                       ? std::string()
-                       : "expects a .png, .jpg, .exr, .tif, .jp2, .webp or .dpx file";
+            return isWritableImageExtension(file) ? std::string()
+                                                  : "expects a " + outputExtensionList() + " file";
           },
           "IMAGE"));
   sub->add_option("--heatmap-max", o->comparison.heatmapMax,

@@ -10,10 +10,11 @@
 #include "app/frame_sequence.h"
 #include "app/option_checks.h"
 #include "app/option_flags.h"
+#include "core/error.h"
+#include "image/output_formats.h"
 #include "run/mpi_job.h"
 #include "run/render_sequence.h"
 #include "run/render_to_file.h"
-#include "core/error.h"
 
 namespace lensrt {
 namespace {
@@ -55,10 +56,7 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
   FileRender& job = args->job;
   cmd->add_option("scene", job.spec.scene.file, "glTF scene file (.gltf or .glb), e.g. scenes/dof_row.gltf")
       ->required();
-  cmd->add_option("-o,--output", job.output,
-                  "output image: .exr (linear float, all channels and metadata), .png/.jpg (8-bit sRGB "
-                  "preview), .tif/.jp2 (16-bit sRGB), .webp (8-bit sRGB) or .dpx (10-bit Cineon log); "
-                  "e.g. -o out/a.exr")
+  cmd->add_option("-o,--output", job.output, "output image: " + outputFormatHelp() + "; e.g. -o out/a.exr")
       ->required();
   cmd->add_option(
       "--ocio-display", args->ocioDisplay,

@@ -18,6 +18,7 @@
 #include "image/cineon.h"
 #include "image/exr_io.h"
 #include "image/oiio_plugin.h"
+#include "image/output_formats.h"
 #include "image/plugin_image_formats.h"
 #include "image/plugin_input.h"
 #include "image/plugin_output.h"
@@ -29,22 +30,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Written by lensrt's own encoders, or through the OpenImageIO plugin.
-enum class FileKind { Exr, Png, Jpeg, Plugin, Unknown };
-
 std::string lowerExtension(const fs::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
-}
-
-FileKind kindOf(const fs::path& file) {
-  const std::string ext = lowerExtension(file);
-  if (ext == ".exr") return FileKind::Exr;
-  if (ext == ".png") return FileKind::Png;
-  if (ext == ".jpg" || ext == ".jpeg") return FileKind::Jpeg;
-  if (pluginOutputFor(file)) return FileKind::Plugin;
-  return FileKind::Unknown;
 }
 
 std::string errnoReason(int err) {
@@ -108,13 +97,15 @@ std::vector<int> previewChannels(const fs::path& file, const Image& image) {
 
 // The file's bytes, encoded in memory so that writing them is one checked
 // step (a full disk is reported, not half-written).
-std::string encode(const fs::path& file, FileKind kind, const Image& image, const ImageMetadata& metadata,
-                   const ImageWriteOptions& options) {
-  if (kind == FileKind::Exr) return encodeExr(file.string(), image, metadata, options.halfFloat);
+std::string encode(const fs::path& file, const OutputFormat& format, const Image& image,
+                   const ImageMetadata& metadata, const ImageWriteOptions& options) {
+  if (format.encoder == ImageEncoder::Exr)
+    return encodeExr(file.string(), image, metadata, options.halfFloat);
   const std::vector<float> values = previewValues(file, image, previewChannels(file, image), options.display);
   std::string rgb(values.size(), '\0');
   for (std::size_t i = 0; i < values.size(); ++i) rgb[i] = char(std::lround(values[i] * 255.0f));
-  return encodePreview(file.string(), kind == FileKind::Png ? PreviewFormat::Png : PreviewFormat::Jpeg,
+  return encodePreview(file.string(),
+                       format.encoder == ImageEncoder::Png ? PreviewFormat::Png : PreviewFormat::Jpeg,
                        image.width, image.height, rgb, metadata);
 }
 
@@ -155,7 +146,7 @@ std::string readAll(const fs::path& file) {
 }  // namespace
 
 bool isWritableImageExtension(const fs::path& file) {
-  return kindOf(file) != FileKind::Unknown;
+  return outputFormatFor(file) != nullptr;
 }
 
 bool isReadableImageExtension(const fs::path& file) {
@@ -166,10 +157,10 @@ bool isReadableImageExtension(const fs::path& file) {
 
 void writeImage(const fs::path& file, const Image& image, const ImageMetadata& metadata,
                 const ImageWriteOptions& options) {
-  const FileKind kind = kindOf(file);
-  if (kind == FileKind::Unknown)
-    throw InputError(file.string(), "unknown image extension '" + file.extension().string() +
-                                        "' (use .exr, .png, .jpg, .tif, .dpx, .jp2 or .webp)");
+  const OutputFormat* format = outputFormatFor(file);
+  if (!format)
+    throw InputError(file.string(), "unknown image extension '" + file.extension().string() + "' (use " +
+                                        outputExtensionList() + ")");
   if (image.width <= 0 || image.height <= 0 || image.channels.empty() ||
       image.pixels.size() != std::size_t(image.width) * image.height * image.channelCount())
     throw InputError(file.string(), "cannot write an empty or inconsistent image (" +
@@ -182,14 +173,14 @@ void writeImage(const fs::path& file, const Image& image, const ImageMetadata& m
     throw InputError(file.string(), "directory does not exist: " + dir.string());
   if (fs::is_directory(file, ec)) throw InputError(file.string(), "is a directory");
 
-  if (kind == FileKind::Plugin) {
+  if (format->encoder == ImageEncoder::Plugin) {
     const std::vector<int> source = previewChannels(file, image);
     writeFileThrough(file, [&](const fs::path& tmp) {
-      writeWithPlugin(file, tmp, *pluginOutputFor(file), image, source, metadata, options.display);
+      writeWithPlugin(file, tmp, *format, image, source, metadata, options.display);
     });
     return;
   }
-  const std::string bytes = encode(file, kind, image, metadata, options);
+  const std::string bytes = encode(file, *format, image, metadata, options);
   TemporaryFile tmp(createTemporaryBeside(file));
   writeBytes(file, tmp.path(), bytes);
   fs::rename(tmp.path(), file, ec);
@@ -211,9 +202,9 @@ void writeFileThrough(const fs::path& file, const std::function<void(const fs::p
 }
 
 void checkDisplayTransform(const fs::path& file, const DisplayTransform& display) {
-  const FileKind kind = kindOf(file);
-  if (kind == FileKind::Exr || kind == FileKind::Unknown || pluginOutputFor(file) == PluginOutput::Dpx) {
-    std::string why = "applies to previews (.png, .jpg, .tif, .jp2, .webp), not ";
+  const OutputFormat* format = outputFormatFor(file);
+  if (!format || format->role != ImageRole::Preview) {
+    std::string why = "applies to previews (" + outputExtensionList(ImageRole::Preview, ", ") + "), not ";
     why += file.extension().string();
     why += " files (scene-linear or log)";
     throw UsageError("--ocio-display", why);
@@ -223,9 +214,9 @@ void checkDisplayTransform(const fs::path& file, const DisplayTransform& display
 }
 
 void checkImageWriter(const fs::path& file) {
-  if (const std::optional<PluginOutput> format = pluginOutputFor(file)) {
+  if (const OutputFormat* format = outputFormatFor(file); format && format->encoder == ImageEncoder::Plugin) {
     std::string purpose = "writing ";
-    purpose += pluginOutputLabel(*format);
+    purpose += format->label;
     purpose += " files";
     OiioPlugin::get(file.string(), purpose);
   }

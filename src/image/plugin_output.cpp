@@ -1,7 +1,6 @@
 #include "image/plugin_output.h"
 
-#include <algorithm>
-#include <cctype>
+#include <string>
 
 #include "core/error.h"
 #include "image/cineon.h"
@@ -9,34 +8,6 @@
 
 namespace lensrt {
 namespace {
-
-struct OutputEncoding {
-  const char* label;
-  const char* format;  // OpenImageIO's name
-  int bits;
-  int quality;  // 0: lossless
-  bool cineonLog;
-};
-
-OutputEncoding encodingOf(PluginOutput format) {
-  switch (format) {
-    case PluginOutput::Tiff:
-      return {"TIFF", "tiff", 16, 0, false};
-    case PluginOutput::Jpeg2000:
-      return {"JPEG 2000", "jpeg2000", 16, 0, false};
-    case PluginOutput::WebP:
-      return {"WebP", "webp", 8, 95, false};
-    case PluginOutput::Dpx:
-      return {"DPX", "dpx", 10, 0, true};
-  }
-  return {"", "", 8, 0, false};
-}
-
-std::string lowerExtension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // The metadata as lines of "key: value", the text TIFF's ImageDescription
 // holds.
@@ -53,23 +24,10 @@ std::string description(const ImageMetadata& metadata) {
 
 }  // namespace
 
-std::optional<PluginOutput> pluginOutputFor(const std::filesystem::path& file) {
-  const std::string ext = lowerExtension(file);
-  if (ext == ".tif" || ext == ".tiff") return PluginOutput::Tiff;
-  if (ext == ".jp2" || ext == ".j2k") return PluginOutput::Jpeg2000;
-  if (ext == ".webp") return PluginOutput::WebP;
-  if (ext == ".dpx") return PluginOutput::Dpx;
-  return std::nullopt;
-}
-
-const char* pluginOutputLabel(PluginOutput format) {
-  return encodingOf(format).label;
-}
-
 void writeWithPlugin(const std::filesystem::path& file, const std::filesystem::path& temporary,
-                     PluginOutput format, const Image& image, const std::vector<int>& rgb,
+                     const OutputFormat& format, const Image& image, const std::vector<int>& rgb,
                      const ImageMetadata& metadata, const std::optional<DisplayTransform>& display) {
-  const OutputEncoding e = encodingOf(format);
+  const OutputFormat& e = format;
   std::string purpose = "writing ";
   purpose += e.label;
   purpose += " files";
@@ -86,7 +44,7 @@ void writeWithPlugin(const std::filesystem::path& file, const std::filesystem::p
     values = previewValues(file, image, rgb, display);
   }
   PluginWriteOptions options;
-  options.format = e.format;
+  options.format = e.oiioName;
   options.bits = e.bits;
   options.quality = e.quality;
   options.colorSpace = e.cineonLog ? "KodakLog" : "sRGB";
@@ -94,7 +52,7 @@ void writeWithPlugin(const std::filesystem::path& file, const std::filesystem::p
   if (const auto version = metadata.find("lensrt:version"); version != metadata.end())
     options.metadata.emplace_back("Software", std::string("lensrt ") + version->second);
   // DPX's description field holds 32 characters.
-  if (!metadata.empty() && format == PluginOutput::Tiff)
+  if (!metadata.empty() && std::string(e.oiioName) == "tiff")
     options.metadata.emplace_back("ImageDescription", description(metadata));
   try {
     plugin.write(temporary, values, image.width, image.height, 3, options);

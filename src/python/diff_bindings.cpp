@@ -10,6 +10,7 @@
 #include "api/output_file.h"
 #include "core/error.h"
 #include "image/image_io.h"
+#include "image/output_formats.h"
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "python/json_objects.h"
@@ -65,7 +66,7 @@ py::object diff(py::handle a, py::handle b, py::handle fail, py::handle failRela
   if (!heatmap.is_none()) {
     o.heatmap = toPathText(heatmap, "heatmap");
     if (!isWritableImageExtension(o.heatmap))
-      throw UsageError("--heatmap", "expects a .png, .jpg, .exr, .tif, .jp2, .webp or .dpx file");
+      throw UsageError("--heatmap", "expects a " + outputExtensionList() + " file");
     createFolderFor(o.heatmap);
   }
   o.heatmapMax = threshold(heatmapMax, "heatmap_max", 0, kHuge, 0.0);
