@@ -21,9 +21,6 @@
 #include "api/text_file.h"
 #include "app/command.h"
 #include "app/option_flags.h"
-#include "run/mpi_job.h"
-#include "run/distributed_render.h"
-#include "run/job_on_ranks.h"
 #include "core/error.h"
 #include "image/contact_sheet.h"
 #include "image/heatmap.h"
@@ -32,6 +29,9 @@
 #include "optics/lens_readers.h"
 #include "optics/paraxial.h"
 #include "report/compare_report.h"
+#include "run/distributed_render.h"
+#include "run/job_on_ranks.h"
+#include "run/mpi_job.h"
 
 namespace lensrt {
 namespace {
@@ -106,6 +106,110 @@ std::string sppLabel(const RenderOutput& out) {
   return fmt::format("mean {:.1f}", double(out.cameraSamples) / double(pixels));
 }
 
+// The four renders side by side, each labelled with its figures.
+void writeContactSheet(const std::filesystem::path& dir, const std::vector<std::string>& modelNames,
+                       const std::vector<const PlannedShot*>& shots,
+                       const std::vector<RenderJobResult>& results) {
+  std::vector<LabelledImage> cells;
+  for (std::size_t i = 0; i < modelNames.size(); ++i) {
+    const CameraInfo info = shots[i]->camera->info();
+    const std::string focus = info.focusMetres <= 0 ? "no focus"
+                              : std::isinf(info.focusMetres)
+                                  ? "focus inf"
+                                  : fmt::format("focus {:.3g} m", info.focusMetres);
+    cells.push_back(
+        {results[i].output.image,
+         {modelNames[i],
+          fmt::format("f={:.4g}mm {} {}", info.focalLengthMm,
+                      info.fNumber > 0 ? fmt::format("f/{:.3g}", info.fNumber) : "no aperture", focus),
+          fmt::format("{} spp, {:.2f} s, rays {:.1f}%", sppLabel(results[i].output), results[i].seconds,
+                      100.0 * results[i].output.cameraRayEfficiency())}});
+  }
+  writeImage(dir / "contact-sheet.png", makeContactSheet(cells, 2), {});
+}
+
+// Each model's figures and, against the full lens (the last), its heat map
+// (on one scale, which `heatmap` returns).
+nlohmann::json modelReports(const std::filesystem::path& dir, const std::vector<std::string>& modelNames,
+                            const std::vector<const PlannedShot*>& shots,
+                            const std::vector<RenderJobResult>& results, HeatmapOptions& heatmap) {
+  const std::size_t lensIndex = modelNames.size() - 1;
+  const Image& lensImage = results[lensIndex].output.image;
+  std::vector<std::vector<float>> errors;
+  for (std::size_t i = 0; i < lensIndex; ++i)
+    errors.push_back(perPixelMaxError(results[i].output.image, lensImage));
+  heatmap.scaleMax = commonHeatmapScale(errors);
+
+  nlohmann::json models = nlohmann::json::object();
+  for (std::size_t i = 0; i < modelNames.size(); ++i) {
+    const Image& image = results[i].output.image;
+    const CameraInfo info = shots[i]->camera->info();
+    nlohmann::json m = {
+        {"camera", shots[i]->camera->describe()},
+        {"file", std::string(modelNames[i]) + ".exr"},
+        {"f_number", info.fNumber > 0 ? nlohmann::json(info.fNumber) : nlohmann::json(nullptr)},
+        {"focus_m", info.focusMetres > 0 ? numberOrNull(info.focusMetres) : nlohmann::json(nullptr)},
+        {"focus_at_infinity", std::isinf(info.focusMetres)},
+        {"focal_length_mm", info.focalLengthMm},
+        {"film", info.film},
+        {"render_seconds", results[i].seconds},
+        {"camera_ray_efficiency", results[i].output.cameraRayEfficiency()},
+        {"nan_samples", results[i].output.droppedSamples},
+        {"mean_spp",
+         double(results[i].output.cameraSamples) /
+             double(std::max<std::uint64_t>(1, std::uint64_t(image.width) * std::uint64_t(image.height)))},
+        {"mean",
+         {{"luminance", numberOrNull(meanLuminance(image))},
+          {"R", numberOrNull(channelMean(image, "R"))},
+          {"G", numberOrNull(channelMean(image, "G"))},
+          {"B", numberOrNull(channelMean(image, "B"))}}},
+    };
+    nlohmann::json profile = nlohmann::json::array();
+    for (const double v : vignettingProfile(image)) profile.push_back(numberOrNull(v));
+    m["vignetting_profile"] = profile;
+    const DiffReport diff = diffImages(image, lensImage, DiffThresholds{});
+    m["mean_abs_diff_vs_lens"] = numberOrNull(diff.overall.meanError);
+    m["rmse_vs_lens"] = numberOrNull(diff.overall.rmse);
+    if (i < lensIndex) {
+      heatmap.title = fmt::format("|{} - lens|", modelNames[i]);
+      const std::string name = fmt::format("diff-{}-vs-lens.png", modelNames[i]);
+      writeImage(dir / name, makeHeatmap(errors[i], image.width, image.height, heatmap), {});
+      m["heatmap"] = name;
+    }
+    models[modelNames[i]] = m;
+  }
+
+  return models;
+}
+
+// The settings every model shares, as the report states them.
+nlohmann::json settingsReport(const RenderSpec& spec, const RenderPlan& plan,
+                              const std::vector<const PlannedShot*>& shots) {
+  const CameraInfo lensInfo = shots.back()->camera->info();
+  const RenderJob& job = plan.job();
+  return {
+      {"scene", spec.scene.file},
+      {"lens", spec.camera.lens},
+      {"f_number", lensInfo.fNumber},
+      {"focus", findOption("--focus")->show(spec)},
+      {"focus_m", numberOrNull(lensInfo.focusMetres)},
+      {"sensor", findOption("--sensor")->show(spec)},
+      {"exposure", lensInfo.exposure},
+      {"pinhole_film", shots[0]->camera->info().film},
+      {"blades", spec.camera.blades},
+      {"width", job.width()},
+      {"height", job.height()},
+      {"spp", spec.sampling.spp},
+      {"noise_threshold", plan.settings().adaptive ? nlohmann::json(plan.settings().adaptive->noiseThreshold)
+                                                   : nlohmann::json(nullptr)},
+      {"min_spp", plan.settings().adaptive ? nlohmann::json(plan.settings().adaptive->minSamples)
+                                           : nlohmann::json(nullptr)},
+      {"seed", spec.sampling.seed},
+      {"max_depth", spec.sampling.maxDepth},
+      {"light_sampler", lightSamplingName(spec.sampling.lightSampling)},
+      {"environment", job.environmentDescription()}};
+}
+
 int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
   // Under MPI every rank renders each model (rank 0 handing out strips);
   // rank 0 alone speaks and writes the directory.
@@ -166,8 +270,7 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
     // The full lens's identity covers the scene, the lens and the settings.
     if (const auto failure = setUpTogether(*context.mpi, spec.scene.file, shots.back()->identity)) {
       if (leader)
-        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, mpi.size(),
-                   failure->line);
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, mpi.size(), failure->line);
       return failure->status;
     }
   }
@@ -187,100 +290,14 @@ int runCompare(const CompareArgs& givenArgs, const CommandContext& context) {
                                 results.back().output.droppedSamples));
   }
   if (!leader) return 0;
-  const std::size_t lensIndex = modelNames.size() - 1;
-  const Image& lensImage = results[lensIndex].output.image;
-
-  // 3. Contact sheet.
-  std::vector<LabelledImage> cells;
-  for (std::size_t i = 0; i < modelNames.size(); ++i) {
-    const CameraInfo info = shots[i]->camera->info();
-    const std::string focus = info.focusMetres <= 0 ? "no focus"
-                              : std::isinf(info.focusMetres)
-                                  ? "focus inf"
-                                  : fmt::format("focus {:.3g} m", info.focusMetres);
-    cells.push_back(
-        {results[i].output.image,
-         {modelNames[i],
-          fmt::format("f={:.4g}mm {} {}", info.focalLengthMm,
-                      info.fNumber > 0 ? fmt::format("f/{:.3g}", info.fNumber) : "no aperture", focus),
-          fmt::format("{} spp, {:.2f} s, rays {:.1f}%", sppLabel(results[i].output), results[i].seconds,
-                      100.0 * results[i].output.cameraRayEfficiency())}});
-  }
-  writeImage(dir / "contact-sheet.png", makeContactSheet(cells, 2), {});
-
-  // 4. Heat maps and figures.
-  std::vector<std::vector<float>> errors;
-  for (std::size_t i = 0; i < lensIndex; ++i)
-    errors.push_back(perPixelMaxError(results[i].output.image, lensImage));
+  writeContactSheet(dir, modelNames, shots, results);
   HeatmapOptions heatmap;
-  heatmap.scaleMax = commonHeatmapScale(errors);
-
-  nlohmann::json models = nlohmann::json::object();
-  for (std::size_t i = 0; i < modelNames.size(); ++i) {
-    const Image& image = results[i].output.image;
-    const CameraInfo info = shots[i]->camera->info();
-    nlohmann::json m = {
-        {"camera", shots[i]->camera->describe()},
-        {"file", std::string(modelNames[i]) + ".exr"},
-        {"f_number", info.fNumber > 0 ? nlohmann::json(info.fNumber) : nlohmann::json(nullptr)},
-        {"focus_m", info.focusMetres > 0 ? numberOrNull(info.focusMetres) : nlohmann::json(nullptr)},
-        {"focus_at_infinity", std::isinf(info.focusMetres)},
-        {"focal_length_mm", info.focalLengthMm},
-        {"film", info.film},
-        {"render_seconds", results[i].seconds},
-        {"camera_ray_efficiency", results[i].output.cameraRayEfficiency()},
-        {"nan_samples", results[i].output.droppedSamples},
-        {"mean_spp",
-         double(results[i].output.cameraSamples) /
-             double(std::max<std::uint64_t>(1, std::uint64_t(image.width) * std::uint64_t(image.height)))},
-        {"mean",
-         {{"luminance", numberOrNull(meanLuminance(image))},
-          {"R", numberOrNull(channelMean(image, "R"))},
-          {"G", numberOrNull(channelMean(image, "G"))},
-          {"B", numberOrNull(channelMean(image, "B"))}}},
-    };
-    nlohmann::json profile = nlohmann::json::array();
-    for (const double v : vignettingProfile(image)) profile.push_back(numberOrNull(v));
-    m["vignetting_profile"] = profile;
-    const DiffReport diff = diffImages(image, lensImage, DiffThresholds{});
-    m["mean_abs_diff_vs_lens"] = numberOrNull(diff.overall.meanError);
-    m["rmse_vs_lens"] = numberOrNull(diff.overall.rmse);
-    if (i < lensIndex) {
-      heatmap.title = fmt::format("|{} - lens|", modelNames[i]);
-      const std::string name = fmt::format("diff-{}-vs-lens.png", modelNames[i]);
-      writeImage(dir / name, makeHeatmap(errors[i], image.width, image.height, heatmap), {});
-      m["heatmap"] = name;
-    }
-    models[modelNames[i]] = m;
-  }
-
-  const CameraInfo lensInfo = shots[lensIndex]->camera->info();
-  nlohmann::json report = {
+  const nlohmann::json models = modelReports(dir, modelNames, shots, results, heatmap);
+  const nlohmann::json report = {
       {"version", LENSRT_VERSION},
       {"command_line", context.commandLine},
       {"model_order", modelNames},
-      {"settings",
-       {{"scene", spec.scene.file},
-        {"lens", spec.camera.lens},
-        {"f_number", lensInfo.fNumber},
-        {"focus", findOption("--focus")->show(spec)},
-        {"focus_m", numberOrNull(lensInfo.focusMetres)},
-        {"sensor", findOption("--sensor")->show(spec)},
-        {"exposure", lensInfo.exposure},
-        {"pinhole_film", shots[0]->camera->info().film},
-        {"blades", spec.camera.blades},
-        {"width", job.width()},
-        {"height", job.height()},
-        {"spp", spec.sampling.spp},
-        {"noise_threshold", plan.settings().adaptive
-                                ? nlohmann::json(plan.settings().adaptive->noiseThreshold)
-                                : nlohmann::json(nullptr)},
-        {"min_spp", plan.settings().adaptive ? nlohmann::json(plan.settings().adaptive->minSamples)
-                                             : nlohmann::json(nullptr)},
-        {"seed", spec.sampling.seed},
-        {"max_depth", spec.sampling.maxDepth},
-        {"light_sampler", lightSamplingName(spec.sampling.lightSampling)},
-        {"environment", job.environmentDescription()}}},
+      {"settings", settingsReport(spec, plan, shots)},
       {"lens", lens},
       {"heatmap_scale", heatmap.scaleMax},
       {"vignetting_bins", kVignettingBins},
