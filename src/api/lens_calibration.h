@@ -2,20 +2,7 @@
 // (camera/opencv_model.h) fitted to lensrt's exact projection (camera/
 // projection.h), so a vision pipeline reads the lens a render was made with.
 //
-// The fit: a grid over the whole frame (65 points across, as many rows as
-// keep them square, corners and edges included); each point's chief ray
-// (Camera::unprojectRaster) meets the focus plane, or for a lens focused at
-// infinity goes to infinity, at the normalised point (X / Z, Y / Z) of
-// OpenCV's camera frame (x right, y down, z forward; camera space is glTF's,
-// so X = x, Y = -y, Z = -z), which must land at the grid point in OpenCV's
-// pixels (the top-left pixel's centre at (0, 0): raster - 0.5). Points whose
-// chief ray the lens blocks are left out. Eigen's Levenberg-Marquardt
-// minimises the squared pixel residuals from a linear fit of fx, fy, cx, cy
-// with no distortion; the residual is reported as RMS and maximum (pixels).
-//
-// A fit whose largest residual exceeds a limit (1 px unless asked) is
-// refused: the model cannot describe the lens, and a pipeline would be off
-// by more.
+// Design notes: docs/design/lens-calibration.md.
 #pragma once
 
 #include <filesystem>

@@ -5,18 +5,7 @@
 // (api/lens_calibration.h) takes its exact derivatives by automatic
 // differentiation.
 //
-//   opencv / full-opencv (cv::projectPoints, COLMAP OPENCV / FULL_OPENCV):
-//     r2 = x^2 + y^2,
-//     radial = (1 + k1 r2 + k2 r2^2 + k3 r2^3) / (1 + k4 r2 + k5 r2^2 + k6 r2^3),
-//     x' = x radial + 2 p1 x y + p2 (r2 + 2 x^2),
-//     y' = y radial + p1 (r2 + 2 y^2) + 2 p2 x y,
-//     u = fx x' + cx, v = fy y' + cy;
-//     the 5-coefficient opencv model has k4 = k5 = k6 = 0 (cv::calibrateCamera's
-//     default), opencv4 also k3 = 0 (COLMAP's OPENCV).
-//   fisheye (cv::fisheye, Kannala-Brandt; COLMAP OPENCV_FISHEYE):
-//     r = sqrt(x^2 + y^2), theta = atan(r),
-//     theta_d = theta (1 + k1 theta^2 + k2 theta^4 + k3 theta^6 + k4 theta^8),
-//     u = fx (theta_d / r) x + cx, v = fy (theta_d / r) y + cy.
+// Design notes: docs/design/opencv-model.md.
 #pragma once
 
 #include <cmath>

@@ -2,24 +2,7 @@
 // the ray a film position sees. Labels that must match the image pixel for
 // pixel (optical flow, calibration) come from it.
 //
-// A point maps to where its chief ray meets the film: the ray from it through
-// the centre of the aperture stop (the full lens, traced exactly:
-// optics/chief_ray.h), through the lens's centre (thin), through the centre
-// of the entrance pupil and, by the paraxial rules, of the exit pupil
-// (thick), through the pinhole. That is the centre of the point's blur spot
-// as the stop closes, so it holds whatever the focus, and it is what OpenCV's
-// and COLMAP's camera models describe.
-//
-// Conventions (as the rendering's, camera/camera.h):
-//  - camera space: glTF's, metres, looking down -Z with +Y up; the origin is
-//    the entrance pupil's centre (the lens's centre for thin, the pinhole);
-//  - raster: pixels, (0, 0) the top-left corner of the top-left pixel, x
-//    right and y down, so pixel (i, j)'s centre is (i + 0.5, j + 0.5);
-//  - wavelengths in nm: the full lens and a thick lens with dispersion data
-//    image each wavelength at its own place (lateral colour); the others
-//    ignore it.
-// Every model's projection is const, thread-safe and deterministic: a
-// renderer may call it for every sample.
+// Design notes: docs/design/projection.md.
 #pragma once
 
 #include <cstdint>

@@ -3,20 +3,7 @@
 // DPX, JPEG 2000, WebP and what else OpenImageIO reads through lensrt's
 // OpenImageIO plugin, loaded only for them (plugin_input.h, plugin_output.h).
 //
-// .exr files hold the image as it is: linear float (or half) channels with
-// the names given (R,G,B,A, depth.Z, variance.R, ...), ZIP compression, and
-// the metadata as string attributes under their keys ("lensrt:spp", ...).
-// .png/.jpg files are an 8-bit preview of R,G,B only: each value is clamped
-// to [0,1] and encoded with the sRGB OETF (see srgb.h); no exposure or tone
-// curve is applied, so keep the EXR for anything quantitative. PNG files
-// carry the metadata as text chunks. .tif, .jp2 and .webp files are the same
-// preview at 16, 16 and 8 bits; .dpx files 10-bit Cineon log of the linear
-// values (plugin_output.h says each).
-//
-// Writes are atomic: the data goes to a hidden temporary file in the target
-// directory that is renamed over the target only once complete, so a failed
-// write (missing directory, permission, disk full, unknown extension) leaves
-// any existing file untouched and no temporary behind.
+// Design notes: docs/design/image-io.md.
 #pragma once
 
 #include <cstddef>

@@ -3,20 +3,7 @@
 // image position (the projection a vision pipeline models: the centre of
 // the point's blur spot as the stop closes, whatever the focus).
 //
-// A lens is rotationally symmetric, so a point's chief ray lies in the plane
-// through the point and the axis (the meridional plane) and the search is
-// one-dimensional: the ray's slope from a point, its height at the entrance
-// pupil's plane from a point at infinity, its slope from a film point. A
-// table built once (the chief rays of fields every half degree, from the
-// axis outward, each started from the last) gives every search a start
-// within a fraction of a degree, and the secant method on the ray's height
-// at the stop finishes it in a few traces. The searches trace the lens with
-// its rims opened (LensSystem::withOpenRims), so a chief ray that a rim cuts
-// is still found, and is then reported as blocked.
-//
-// Thread-safe (const after construction) and deterministic: the same input
-// gives the same bits. Lens space throughout (lens_system.h): mm, +z toward
-// the film.
+// Design notes: docs/design/chief-ray.md.
 #pragma once
 
 #include <cstdint>

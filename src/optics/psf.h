@@ -1,22 +1,7 @@
 // The point spread function (PSF) of a field point, by FFT of its pupil
 // function (optics/pupil_function.h), as Zemax's "FFT PSF".
 //
-// Sampling. The pupil grid has `pupilSamples` points across the beam at the
-// shortest wavelength, in an FFT of size padding x pupilSamples (at least
-// twice the pupil, so the intensity, whose spectrum is the pupil's
-// autocorrelation, is sampled above its Nyquist rate and the MTF does not
-// wrap). The PSF's sample spacing is lambda / (FFT size x pupil spacing); the
-// pupil spacing grows with the wavelength so that every wavelength's PSF
-// falls on the same film grid, and the polychromatic PSF is their weighted sum
-// (each normalised to unit energy). The PSF's window wraps around: rays
-// landing outside it alias. That cannot happen while the OPD changes by less
-// than half a wave between neighbouring pupil samples (Nyquist for the pupil's
-// phase): `maxStepWaves` says how close it came; with automatic sampling the
-// pupil grid doubles (up to 513 points) until the step is below a quarter wave.
-//
-// Coordinates: the PSF is on the film plane, lens space x and y (the field
-// point lies toward +x in object space, so its image toward -x), centred on
-// the first wavelength's chief ray image: sample (size/2, size/2).
+// Design notes: docs/design/psf.md.
 #pragma once
 
 #include <memory>

@@ -1,30 +1,7 @@
 // The pupil function of a field point: the amplitude and the optical path
 // difference (OPD) of the wave leaving the lens, from exactly traced rays.
 //
-// Pupil coordinates are the direction cosines (L, M), the x and y components
-// of a ray's unit direction as it leaves the rear surface toward the film.
-// In them the PSF on the film is a Fourier transform, at any field angle: a
-// ray of direction d that would reach the reference point P on the film
-// reaches P + (dx, dy, 0) with its path longer by d.(dx, dy, 0) = L dx + M dy
-// (the Debye integral), so
-//   U(dx, dy) = sum over the pupil of a(L, M) exp(i k (W(L, M) + L dx + M dy)).
-// The grid is square in (L, M), so the wave is sampled where the FFT needs it:
-// each grid point's ray is aimed (Newton on its aim-plane point) until it
-// leaves the lens in that direction.
-//
-// W is the optical path of a ray from the object's wavefront (a plane for an
-// object at infinity, a sphere about it otherwise) to the reference sphere,
-// minus the chief ray's: the sphere is centred on the reference point (the
-// chief ray's image on the film) and passes through the chief ray's crossing
-// of the paraxial exit pupil's plane.
-//
-// The amplitude a is the square root of the light each sample carries: the
-// rays' transmittance (coatings, and the stop's shape: blades or a grey mask,
-// given as intensity transmittance at the stop), times the ray density (how
-// much of the incoming beam one grid cell of (L, M) takes: the aim-plane area
-// per cell). Cells on the beam's edge (the stop, vignetting) are covered in
-// part: their amplitude is the mean over 6 x 6 sub-rays, so the edge is not a
-// staircase of whole cells.
+// Design notes: docs/design/pupil-function.md.
 #pragma once
 
 #include <functional>

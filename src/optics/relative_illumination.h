@@ -1,23 +1,6 @@
 // Relative illumination: film irradiance across the field, from exact rays.
 //
-// For a Lambertian scene of uniform radiance L filling the field, the
-// irradiance at film point x is E(x) = L * Omega(x), the projected solid
-// angle of the directions from x that pass the whole lens:
-//   Omega(x) = integral over passing points p of the plane z = rearZ of
-//              cos^4(theta) / d^2 dA,
-// theta the angle of the ray x -> p to the axis and d the axial distance from
-// the film to that plane (dA cos(theta) / (d / cos(theta))^2 is the solid
-// angle, times cos(theta) for the projection onto the film). It includes
-// the cos^4 falloff, mechanical vignetting by every aperture, and pupil
-// distortion. Relative illumination is RI(x) = E(x) / E(0). On the axis of a
-// lens at infinity, Omega(0) = pi / (4 N^2) for its working f-number N.
-//
-// With a lens that models coatings each passing ray counts with its Fresnel
-// transmittance (Omega is then the transmitted projected solid angle).
-//
-// The passing set is found by a coarse grid over a generous square, then
-// integrated by the midpoint rule on a fine grid over its bounding box:
-// deterministic, no sampling noise.
+// Design notes: docs/design/relative-illumination.md.
 #pragma once
 
 #include <vector>

@@ -1,27 +1,6 @@
 // Per-pixel accumulation and the output channel layout.
 //
-// Reconstruction is a box filter: each pixel is the plain mean of the samples
-// whose film positions fall inside it. Samples are added in sample order, so
-// the floating-point sums (and the image) are identical for any thread count.
-//
-// Channels: R,G,B (mean radiance times the camera weight), A (coverage: of
-// the camera samples that reach the scene straight through the lens, the
-// fraction whose ray hits geometry; samples the lens blocks are left out, so
-// that its vignetting stays in RGB, and so are flare's, reflected in the
-// lens, whose ghosts of other directions are light over the image, not what
-// it shows; a pixel none of whose samples came straight, as can happen with
-// flare at a few spp, takes the coverage of those reflected), then the AOVs
-// asked for:
-//  - depth.Z: mean camera-ray hit distance in metres over the samples that hit;
-//    0 where no sample hit (background).
-//  - normal.X/Y/Z: mean world shading normal at the first hit, facing the
-//    camera, renormalised; 0 where no sample hit.
-//  - albedo.R/G/B: mean first-hit base colour over all samples (a miss adds 0).
-//  - variance.R/G/B: variance of the pixel's mean estimate, i.e. the unbiased
-//    sample variance divided by the sample count; 0 with a single sample.
-//  - spp: the samples the pixel took (adaptive sampling stops some early).
-// A sample with a NaN or infinite radiance is dropped (not part of any mean)
-// and counted.
+// Design notes: docs/design/film.md.
 #pragma once
 
 #include <cstddef>

@@ -6,14 +6,8 @@
 // the film's RGB at the end:
 // - reflectances (base, sheen, attenuation colour) are upsampled to smooth
 //   spectra (Jakob and Hanika 2019, color/rgb_to_spectrum.h);
-// - light (emission, punctual lights, the environment) is an upsampled RGB
-//   times the output white's illuminant, so RGB (1, 1, 1) is D65;
-// - values above 1 are scaled into the table's range and back (pbrt-v4's
-//   RGBUnboundedSpectrum and RGBIlluminantSpectrum);
-// - the film adds c(l) L(l) / (4 pdf(l)) over the four wavelengths, c the
-//   film response (render/film_response.h) in the output space.
-// An event that depends on the wavelength (dispersive refraction) continues
-// with the hero alone (terminateSecondary), its weight multiplied by 4.
+//
+// Design notes: docs/design/wavelengths.md.
 #pragma once
 
 #include <array>
