@@ -49,6 +49,8 @@ void checkCameraSpace(const ColourSpec& o, const SensorResponse& sensor) {
 CameraRgb cameraRgb(const SensorResponse& sensor, const FilmResponse& film, double green,
                     const Vec3d& neutral, const std::function<double(double)>& d65AtUnitY) {
   CameraRgb c;
+  c.maker = sensor.maker;
+  c.model = sensor.model;
   c.toImage = film.sensorToOutput() * Mat3d::diagonal({green, green, green});
   c.fromImage = *c.toImage.inverse();  // make() refused a film that records no white
   c.asShotNeutral = neutral / neutral.y;

@@ -1,5 +1,8 @@
 #include "api/raw_output.h"
 
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
 #include <filesystem>
 
 #include "api/output_file.h"
@@ -48,6 +51,21 @@ Image cameraChannels(const Image& image, const std::optional<SensorReadout>& rea
   return out;
 }
 
+// When the raw file was "taken": now, or SOURCE_DATE_EPOCH's time where it
+// is set (reproducible files, as reproducible builds date theirs).
+std::string captureTime() {
+  std::time_t when = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) {
+    char* end = nullptr;
+    const long long seconds = std::strtoll(epoch, &end, 10);
+    if (end != epoch && *end == '\0' && seconds >= 0) when = std::time_t(seconds);
+  }
+  std::tm utc{};
+  if (!gmtime_r(&when, &utc)) return {};
+  char text[32];
+  return std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &utc) ? std::string(text) : std::string();
+}
+
 }  // namespace
 
 void checkRawOutput(const RawOutputOptions& o) {
@@ -77,7 +95,22 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
       d.pattern.colours[std::size_t(y * 2 + x)] = colour;
       d.pattern.name[std::size_t(y * 2 + x)] = "RGB"[colour];
     }
-  d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
+  // Make and Model name the camera whose response the film has; lensrt's
+  // model and lens otherwise (LensModel names the lens either way).
+  if (cameraRgb && !cameraRgb->model.empty()) {
+    d.make = cameraRgb->maker;
+    d.model = cameraRgb->model;
+  } else {
+    d.model = info.model + (info.lens.empty() ? "" : " " + info.lens);
+  }
+  d.lensModel = info.lens;
+  const FilmGeometry& film = camera.film();
+  constexpr double kFullFrameDiagonalMm = 43.2666;  // 36 x 24 mm
+  const double diagonal = std::hypot(film.sensorWidthMm, film.sensorHeightMm);
+  if (info.focalLengthMm > 0 && diagonal > 0)
+    d.focalLengthIn35mmFilm = int(std::lround(info.focalLengthMm * kFullFrameDiagonalMm / diagonal));
+  if (film.sensorWidthMm > 0) d.focalPlanePixelsPerCm = film.width / (film.sensorWidthMm / 10.0);
+  d.dateTimeOriginal = captureTime();
   // The file describes the mosaic it holds: a readout's photon counts scale
   // the camera's channels (cameraChannels), and its matrix and neutral with them.
   if (cameraRgb)

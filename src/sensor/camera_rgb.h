@@ -8,6 +8,8 @@
 // `--output-space camera` records it).
 #pragma once
 
+#include <string>
+
 #include "core/mat3.h"
 #include "core/vec.h"
 #include "image/image.h"
@@ -26,6 +28,7 @@ struct CameraRgb {
   Vec3d relativeElectrons{1, 1, 1};
   Vec3d asShotNeutral{1, 1, 1};  // camera RGB of the white balance's illuminant, green 1
   Mat3d xyzToCamera;             // XYZ to camera RGB under D65 (the DNG's ColorMatrix1)
+  std::string maker, model;      // the response's camera ("Nikon", "D850"); empty where unknown
 };
 
 // R, G, B of every pixel of `image` replaced by `m` times them (no other

@@ -55,6 +55,19 @@ void writeTiff(const std::filesystem::path& path, const std::filesystem::path& f
     const std::uint16_t iso = std::uint16_t(std::min(d.iso, 65535.0));
     exifOk = exifOk && TIFFSetField(t, EXIFTAG_ISOSPEEDRATINGS, 1, &iso);
   }
+  if (!d.lensModel.empty()) exifOk = exifOk && TIFFSetField(t, EXIFTAG_LENSMODEL, d.lensModel.c_str());
+  if (d.focalLengthIn35mmFilm > 0) {
+    const std::uint16_t f35 = std::uint16_t(std::min(d.focalLengthIn35mmFilm, 65535));
+    exifOk = exifOk && TIFFSetField(t, EXIFTAG_FOCALLENGTHIN35MMFILM, f35);
+  }
+  if (d.focalPlanePixelsPerCm > 0) {
+    const std::uint16_t centimetres = 3;  // EXIF FocalPlaneResolutionUnit
+    exifOk = exifOk && TIFFSetField(t, EXIFTAG_FOCALPLANEXRESOLUTION, d.focalPlanePixelsPerCm) &&
+             TIFFSetField(t, EXIFTAG_FOCALPLANEYRESOLUTION, d.focalPlanePixelsPerCm) &&
+             TIFFSetField(t, EXIFTAG_FOCALPLANERESOLUTIONUNIT, centimetres);
+  }
+  if (!d.dateTimeOriginal.empty())
+    exifOk = exifOk && TIFFSetField(t, EXIFTAG_DATETIMEORIGINAL, d.dateTimeOriginal.c_str());
   if (!exifOk || !TIFFWriteCustomDirectory(t, &exifOffset)) fail("writing the EXIF directory");
   TIFFFreeDirectory(t);
   if (TIFFCreateDirectory(t) != 0) fail("cannot start the image directory");

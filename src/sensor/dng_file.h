@@ -19,6 +19,10 @@ struct DngDescription {
   int calibrationIlluminant1 = 21;       // EXIF LightSource: 21 is D65
   std::array<double, 3> asShotNeutral{1.0, 1.0, 1.0};  // camera RGB of the white to balance to
   double exposureSeconds = 0.0, iso = 0.0, fNumber = 0.0, focalLengthMm = 0.0;  // 0: not written
+  std::string lensModel;             // EXIF LensModel; empty: not written
+  int focalLengthIn35mmFilm = 0;     // the focal length giving the same field over 36x24's diagonal
+  double focalPlanePixelsPerCm = 0;  // EXIF FocalPlaneX/YResolution (unit: cm); 0: not written
+  std::string dateTimeOriginal;      // "YYYY:MM:DD HH:MM:SS"; empty: not written
 };
 
 // The linear sRGB (Rec.709 primaries) camera lensrt's RGB film is: XYZ to linear

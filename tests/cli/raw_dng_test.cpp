@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -104,6 +106,55 @@ TEST(RawDng, DcrawAndLibRawIdentifyTheCamera) {
   ASSERT_EQ(render(dir, {"--cfa", "GBRG"}).status, 0);
   EXPECT_NE(runProgram("dcraw", {"-i", "-v", (dir / "a.dng").string()}).out.find("Filter pattern: GB/RG"),
             std::string::npos);
+}
+
+// The EXIF a photo's tools read: the lens, the 35 mm-equivalent focal length
+// (f times 43.27 mm over the sensor's diagonal), the focal plane's pixels per
+// cm, the capture time (SOURCE_DATE_EPOCH's when set), and a camera
+// response's maker and model as Make and Model.
+TEST(RawDng, ExifNamesTheLensTheFocalPlaneAndTheCamera) {
+  const TempDir dir;
+  ::setenv("SOURCE_DATE_EPOCH", "86400", 1);
+  const RunResult r = render(dir, {"--camera", "lens", "--lens", "dgauss-50mm", "--sensor-response",
+                                   "canon-eos-5d-mark-ii", "--sensor", "aps-c"});
+  ::unsetenv("SOURCE_DATE_EPOCH");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ImageMetadata meta;
+  readImage(dir / "a.exr", &meta);
+  const double focal = std::stod(meta["lensrt:focal_length_mm"]);
+  double sensorW = 0, sensorH = 0;
+  ASSERT_EQ(std::sscanf(meta["lensrt:sensor_mm"].c_str(), "%lfx%lf", &sensorW, &sensorH), 2);
+
+  struct Closer {
+    void operator()(TIFF* t) const { TIFFClose(t); }
+  };
+  const std::unique_ptr<TIFF, Closer> tiff(TIFFOpen((dir / "a.dng").c_str(), "r"));
+  ASSERT_TRUE(tiff);
+  char* make = nullptr;
+  char* model = nullptr;
+  ASSERT_TRUE(TIFFGetField(tiff.get(), TIFFTAG_MAKE, &make));
+  ASSERT_TRUE(TIFFGetField(tiff.get(), TIFFTAG_MODEL, &model));
+  EXPECT_STREQ(make, "Canon");
+  EXPECT_STREQ(model, "EOS 5D Mark II");
+  toff_t exif = 0;
+  ASSERT_TRUE(TIFFGetField(tiff.get(), TIFFTAG_EXIFIFD, &exif));
+  ASSERT_TRUE(TIFFReadEXIFDirectory(tiff.get(), exif));
+  char* lens = nullptr;
+  ASSERT_TRUE(TIFFGetField(tiff.get(), EXIFTAG_LENSMODEL, &lens));
+  EXPECT_STREQ(lens, "dgauss-50mm");
+  std::uint16_t f35 = 0;
+  ASSERT_TRUE(TIFFGetField(tiff.get(), EXIFTAG_FOCALLENGTHIN35MMFILM, &f35));
+  EXPECT_EQ(f35, std::lround(focal * std::hypot(36.0, 24.0) / std::hypot(sensorW, sensorH)));
+  EXPECT_GT(f35, focal * 1.4);  // an APS-C sensor crops by about 1.5
+  float perCm = 0;
+  std::uint16_t unit = 0;
+  ASSERT_TRUE(TIFFGetField(tiff.get(), EXIFTAG_FOCALPLANEXRESOLUTION, &perCm));
+  ASSERT_TRUE(TIFFGetField(tiff.get(), EXIFTAG_FOCALPLANERESOLUTIONUNIT, &unit));
+  EXPECT_EQ(unit, 3);  // centimetres
+  EXPECT_NEAR(perCm, 33 / (sensorW / 10), 1e-3 * perCm);
+  char* when = nullptr;
+  ASSERT_TRUE(TIFFGetField(tiff.get(), EXIFTAG_DATETIMEORIGINAL, &when));
+  EXPECT_STREQ(when, "1970:01:02 00:00:00");
 }
 
 // Each site holds its colour's value of the EXR: v * 65535 (noiseless), or
