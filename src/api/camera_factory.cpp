@@ -238,6 +238,18 @@ ImageMetadata standardCameraAttributes(const Camera& camera, const Exposure& exp
     m["expTime"] = fmt::format("{:.6g}", exposure.shutterSeconds);
     m["isoSpeed"] = fmt::format("{:.6g}", exposure.iso);
   }
+  // OpenEXR 3.2's lens and sensor attributes (floats in mm and microns, the
+  // lens a string): what a compositor's match move reads.
+  if (!i.lens.empty()) m["lensModel"] = i.lens;
+  if (i.focalLengthMm > 0) {
+    m["effectiveFocalLength"] = fmt::format("{:.6g}", i.focalLengthMm);
+    // The barrel's figure: the design's focal length in whole millimetres.
+    m["nominalFocalLength"] = fmt::format("{:.0f}", i.focalLengthMm);
+  }
+  const FilmGeometry& film = camera.film();
+  if (film.width > 0)
+    m["sensorPhotositePitch"] = fmt::format("{:.6g}", film.sensorWidthMm * 1000.0 / film.width);
+  m["sensorOverallDimensions"] = fmt::format("{:.6g} {:.6g}", film.sensorWidthMm, film.sensorHeightMm);
   // OpenEXR's camera space is left-handed, looking down +Z with +Y up; glTF's
   // looks down -Z: negate z after the world-to-camera transform. Imath
   // multiplies row vectors, so the matrix is stored transposed.

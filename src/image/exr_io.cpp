@@ -17,6 +17,7 @@
 #include <ImfStandardAttributes.h>
 #include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
 
 #include <algorithm>
 #include <array>
@@ -173,10 +174,21 @@ void collectMetadata(const Imf::Header& header, ImageMetadata& metadata) {
 // header; every other key is written as a string.
 // OpenEXR's standard attributes that lensrt writes (ImfStandardAttributes.h),
 // kept in metadata as text: numbers, 16 for worldToCamera (Imath's row-vector
-// order) and 8 for chromaticities (red, green, blue, white x y). Written with
-// their standard types; text that does not parse is left out.
-constexpr std::array<const char*, 6> kStandardKeys{"aperture", "focus",         "expTime",
-                                                   "isoSpeed", "worldToCamera", "chromaticities"};
+// order), 8 for chromaticities (red, green, blue, white x y) and 2 for
+// sensorOverallDimensions (mm); lensModel is text. Written with their
+// standard types (OpenEXR 3.2's for the lens and sensor ones); text that does
+// not parse is left out.
+constexpr std::array<const char*, 11> kStandardKeys{"aperture",
+                                                    "focus",
+                                                    "expTime",
+                                                    "isoSpeed",
+                                                    "worldToCamera",
+                                                    "chromaticities",
+                                                    "nominalFocalLength",
+                                                    "effectiveFocalLength",
+                                                    "sensorPhotositePitch",
+                                                    "sensorOverallDimensions",
+                                                    "lensModel"};
 
 std::vector<float> numbersOf(const std::string& text) {
   std::vector<float> out;
@@ -188,6 +200,10 @@ std::vector<float> numbersOf(const std::string& text) {
 }
 
 void insertStandardAttribute(Imf::Header& header, const std::string& key, const std::string& value) {
+  if (key == "lensModel") {
+    header.insert(key, Imf::StringAttribute(value));
+    return;
+  }
   const std::vector<float> v = numbersOf(value);
   for (const float x : v)
     if (!std::isfinite(x)) return;
@@ -201,6 +217,9 @@ void insertStandardAttribute(Imf::Header& header, const std::string& key, const 
     if (v.size() != 8) return;
     Imf::addChromaticities(header,
                            Imf::Chromaticities({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}));
+  } else if (key == "sensorOverallDimensions") {
+    if (v.size() != 2) return;
+    header.insert(key, Imf::V2fAttribute(Imath::V2f(v[0], v[1])));
   } else if (v.size() == 1) {
     header.insert(key, Imf::FloatAttribute(v[0]));
   }
