@@ -1,14 +1,13 @@
 #include "api/raw_output.h"
 
 #include <cmath>
-#include <cstdlib>
-#include <ctime>
 #include <filesystem>
 
 #include "api/output_file.h"
 #include "color/chromatic_adaptation.h"
 #include "color/color_space.h"
 #include "core/error.h"
+#include "image/capture_date.h"
 #include "sensor/dng_file.h"
 #include "sensor/mosaic.h"
 
@@ -49,21 +48,6 @@ Image cameraChannels(const Image& image, const std::optional<SensorReadout>& rea
       for (int c = 0; c < 3; ++c) out.at(x, y, c) = image.at(x, y, red + c);
   transformRgb(out, readout ? imageToSensorValues(*readout) : cameraRgb.fromImage);
   return out;
-}
-
-// When the raw file was "taken": now, or SOURCE_DATE_EPOCH's time where it
-// is set (reproducible files, as reproducible builds date theirs).
-std::string captureTime() {
-  std::time_t when = std::time(nullptr);
-  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) {
-    char* end = nullptr;
-    const long long seconds = std::strtoll(epoch, &end, 10);
-    if (end != epoch && *end == '\0' && seconds >= 0) when = std::time_t(seconds);
-  }
-  std::tm utc{};
-  if (!gmtime_r(&when, &utc)) return {};
-  char text[32];
-  return std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &utc) ? std::string(text) : std::string();
 }
 
 }  // namespace
@@ -110,7 +94,7 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
   if (info.focalLengthMm > 0 && diagonal > 0)
     d.focalLengthIn35mmFilm = int(std::lround(info.focalLengthMm * kFullFrameDiagonalMm / diagonal));
   if (film.sensorWidthMm > 0) d.focalPlanePixelsPerCm = film.width / (film.sensorWidthMm / 10.0);
-  d.dateTimeOriginal = captureTime();
+  d.dateTimeOriginal = captureDate();
   // The file describes the mosaic it holds: a readout's photon counts scale
   // the camera's channels (cameraChannels), and its matrix and neutral with them.
   if (cameraRgb)

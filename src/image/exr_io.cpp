@@ -26,7 +26,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -35,6 +34,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "image/capture_date.h"
 
 namespace lensrt {
 namespace {
@@ -84,16 +84,6 @@ class MemoryIStream : public Imf::IStream {
   std::string_view bytes_;
   std::size_t position_ = 0;
 };
-
-// "YYYY:MM:DD HH:MM:SS" local time, the TIFF/EXIF form OpenImageIO wrote.
-std::string captureDate() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &local);
-  return text;
-}
 
 std::string compressionName(Imf::Compression c) {
   switch (c) {
