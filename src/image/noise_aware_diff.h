@@ -1,53 +1,8 @@
-// Noise-aware comparison of two Monte Carlo renders of (supposedly) the same
-// scene, so that different seeds pass while real changes fail.
-//
-// Each image carries variance.R/G/B: the variance of each pixel's MEAN
-// estimate (sample variance / spp). For channel c of a pixel
-//     t = (a - b) / sqrt(var_a + var_b + (floor * (|a|+|b|)/2)^2)
-// is, when both renders estimate the same value, close to Student's t with
-// nu = min(spp_a, spp_b) - 1 degrees of freedom (a conservative Welch
-// bound; normal when spp is unknown). The relative floor (default 0.2% of
-// the value) keeps t finite where a low-spp render saw no variance by chance
-// and absorbs float rounding; heavy-tailed MC noise (rare bright paths)
-// makes small-spp variance estimates too low, which the t quantile and the
-// floor temper but cannot remove: compare renders of at least ~16 spp.
-//
-// Three tests judge the image, the count test at half the stated
-// image-level false-alarm rate beta and the flux and gain tests at a quarter
-// each (Bonferroni), and it fails if any does:
-//  - Count test, for local changes. A pixel fails when any of its R,G,B has
-//    |t| > c, c set so a pixel of two equivalent renders fails with
-//    probability alpha (the per-pixel false-alarm rate, split over the
-//    channels by Sidak's rule, 1-(1-alpha)^(1/3) each: an upper bound on
-//    the rate whatever the channels' correlation). Pixels whose variance is
-//    zero in both images are instead held to the absolute threshold (a pixel
-//    that saw no noise must match to rounding). With independent pixels the
-//    count of failures is Binomial(N, alpha); the image fails when it
-//    exceeds the k with P(X > k) <= beta/2.
-//  - Flux test, for small global changes hidden in the noise (a 2% gain
-//    moves each pixel by a fraction of a standard deviation, too little for
-//    any one pixel to fail). Per channel, z = sum(A-B) / sqrt(sum(varA+varB))
-//    is close to standard normal for unbiased renders (the central limit
-//    theorem over pixels; valid for different spp too), tested two-sided at
-//    beta/12 per channel.
-//  - Gain test, for a change of exposure where a few noisy pixels (fireflies,
-//    small bright lights) dominate the flux's variance. Per channel the
-//    weighted least-squares gain g = sum(m d / v) / sum(m^2 / v) of the
-//    differences d = A-B against the pixel means m = (|A|+|B|)/2, with v the
-//    floored variance of d, has z = sum(m d / v) / sqrt(sum(m^2 / v)): the
-//    matched filter of a gain, which weights each pixel by its signal to
-//    noise. The weights are symmetric in A and B, so for equivalent renders
-//    z is centred on 0 when both have the same spp (with different spp the
-//    skew of Monte Carlo noise biases it, and the test only reports); it is
-//    tested two-sided at beta/12 per channel (the golden suite measures the
-//    false-alarm rate, tools/measure-false-alarms).
-// An image with an "spp" channel (adaptive sampling: the samples each pixel
-// took) has its own samples per pixel: the count test holds each pixel to
-// the quantile for its own degrees of freedom, the gain test decides only
-// when both images took the same samples in every pixel, and the degrees of
-// freedom reported are the fewest.
-// Both tests assume independent pixels (per-pixel sample streams, no
-// filter splatting across pixels or denoising).
+// Noise-aware comparison of two Monte Carlo renders of (supposedly) the same scene,
+// so that different seeds pass while real changes fail: per-pixel Student t scores
+// from the variance channels, judged by a count test, a flux test and a gain test
+// (Bonferroni over the image's false-alarm rate). The statistics and their
+// assumptions: docs/design/noise-aware-diff.md.
 #pragma once
 
 #include <array>
