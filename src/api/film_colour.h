@@ -1,19 +1,7 @@
-// How a render's film records colour, from the camera options: spectral
-// transport through a film response (render/film_response.h) built from the
-// sensor's response curves, the white balance and the output space, or RGB
-// transport (--spectral off).
-//
-// - cie1931 (the default response): XYZ, adapted (Bradford) from the white
-//   balance's illuminant to the output space's white, then into its RGB.
-// - A camera (--sensor-response NAME|FILE.csv): its R, G, B curves, through a
-//   3x3 matrix to XYZ fitted over the ColorChecker under the white balance's
-//   illuminant, then as cie1931; or its own RGB (--output-space camera).
-// - The white balance: none (the illuminant of RGB (1, 1, 1) light, D65),
-//   KELVIN (CIE daylight from 4000 K, a black body below), or auto (the colour
-//   of the scene's most powerful light: upsampled, times D65). A reflectance
-//   of 1 under that illuminant records the output's white exactly, so a grey
-//   card stays grey.
-// - The output space: srgb (linear Rec. 709), rec2020, acescg, xyz.
+// How a render's film records colour, from the camera options: spectral transport
+// through a film response (render/film_response.h) built from the sensor's response
+// curves, the white balance and the output space, or RGB transport (--spectral off).
+// The responses, white balances and spaces: docs/design/spectral-transport.md.
 #pragma once
 
 #include <memory>

@@ -1,19 +1,7 @@
-// What the colours of one camera sample are carried as: RGB, or (spectral
-// transport) the radiance at four wavelengths, a hero wavelength and three
-// copies rotated by a quarter of the range (pbrt-v4's SampledWavelengths).
-// The scene's colours are linear Rec. 709 RGB (glTF); each is turned into the
-// sample's Spectrum where it enters a path, and the path's radiance back into
-// the film's RGB at the end:
-// - reflectances (base, sheen, attenuation colour) are upsampled to smooth
-//   spectra (Jakob and Hanika 2019, color/rgb_to_spectrum.h);
-// - light (emission, punctual lights, the environment) is an upsampled RGB
-//   times the output white's illuminant, so RGB (1, 1, 1) is D65;
-// - values above 1 are scaled into the table's range and back (pbrt-v4's
-//   RGBUnboundedSpectrum and RGBIlluminantSpectrum);
-// - the film adds c(l) L(l) / (4 pdf(l)) over the four wavelengths, c the
-//   film response (render/film_response.h) in the output space.
-// An event that depends on the wavelength (dispersive refraction) continues
-// with the hero alone (terminateSecondary), its weight multiplied by 4.
+// What the colours of one camera sample are carried as: RGB, or (spectral transport)
+// the radiance at four wavelengths, a hero and three rotated copies (pbrt-v4's
+// SampledWavelengths). How colours enter and leave a path, and dispersion:
+// docs/design/spectral-transport.md.
 #pragma once
 
 #include <array>
