@@ -31,29 +31,25 @@ struct Render {
 
 // Through dgauss-50mm at f/4 on the default 36 x 24 mm sensor, 24 x 16
 // pixels: its corners lose many samples to the lens (vignetting).
-Render render(const TempDir& dir, const cli::QuadScene& scene, const std::vector<std::string>& extra) {
-  cli::writeFile(dir / "scene.gltf", cli::quadsGltf(scene));
-  std::vector<std::string> args = {"render",
-                                   (dir / "scene.gltf").string(),
-                                   "--camera",
-                                   "lens",
-                                   "--lens",
-                                   "dgauss-50mm",
-                                   "--fstop",
-                                   "4",
-                                   "--res",
-                                   "24x16",
-                                   "--spectral",
-                                   "off",
-                                   "-q",
-                                   "-o",
-                                   (dir / "out.exr").string()};
+const std::vector<std::string> kLens = {"--camera", "lens", "--lens", "dgauss-50mm", "--fstop", "4"};
+
+Render renderFile(const TempDir& dir, const std::string& scene, const std::vector<std::string>& camera,
+                  const std::vector<std::string>& extra) {
+  std::vector<std::string> args = {
+      "render", scene, "--res", "24x16", "--spectral", "off", "-q", "-o", (dir / "out.exr").string()};
+  args.insert(args.end(), camera.begin(), camera.end());
   args.insert(args.end(), extra.begin(), extra.end());
   const RunResult r = runLensrt(args);
   EXPECT_EQ(r.status, 0) << r.err;
   Render out;
   if (r.status == 0) out.image = readImage(dir / "out.exr", &out.meta);
   return out;
+}
+
+Render render(const TempDir& dir, const cli::QuadScene& scene, const std::vector<std::string>& extra,
+              const std::vector<std::string>& camera = kLens) {
+  cli::writeFile(dir / "scene.gltf", cli::quadsGltf(scene));
+  return renderFile(dir, (dir / "scene.gltf").string(), camera, extra);
 }
 
 double blockedShare(const Render& r) {
@@ -124,6 +120,74 @@ TEST(AlphaCoverage, AHalfBackgroundSceneIsHalfCovered) {
       }
     EXPECT_EQ(wrong, 0) << "corner A " << r.image.at(0, 0, a);
     EXPECT_NEAR(sum / (r.image.width * r.image.height), 0.5, 1.0 / r.image.width);
+  }
+}
+
+// The Cornell box (scenes/cornell.gltf), its camera 1.44 m before the open
+// front: on a 33 x 22 mm sensor the frame stays inside the box (the full
+// frame's 36 mm sees past the side walls' front edges, where A rightly
+// falls), so every sample that leaves the lens hits and A is 1 to the
+// corners. 32 spp: with flare on, 64% of the samples are blocked, and a
+// pixel all of whose samples are (A 0) has odds 0.64^32 = 6e-7.
+TEST(AlphaCoverage, TheCornellBoxThroughALensIsOpaqueToItsCorners) {
+  const TempDir dir;
+  const std::string cornell = std::string(LENSRT_SOURCE_DIR) + "/scenes/cornell.gltf";
+  for (const char* flare : {"off", "on"}) {
+    SCOPED_TRACE(std::string("--flare ") + flare);
+    const Render r = renderFile(dir, cornell, kLens, {"--sensor", "33x22", "--spp", "32", "--flare", flare});
+    ASSERT_EQ(r.image.width, 24);
+    EXPECT_GT(blockedShare(r), 0.02);
+    const int a = r.image.channelIndex("A");
+    int notOne = 0;
+    for (int y = 0; y < r.image.height; ++y)
+      for (int x = 0; x < r.image.width; ++x) notOne += r.image.at(x, y, a) != 1.0f;
+    EXPECT_EQ(notOne, 0) << "corner A " << r.image.at(0, 0, a) << ", centre A "
+                         << r.image.at(r.image.width / 2, r.image.height / 2, a);
+  }
+}
+
+// An object's edge is partly covered. The wall of the half scene ends at
+// x = 3 cm, half a pixel right of the axis (a pixel spans 6.4 cm at 2 m
+// through the pinhole's 0.5 rad, 5.8 cm through the lens): column 12 sees
+// the edge across its middle, A strictly between 0 and 1 (about 0.5), and
+// the sky alone beyond is 0. Through the pinhole, which blocks nothing and
+// reflects nothing, A is what it always was: hits over samples, a multiple
+// of 1/spp.
+TEST(AlphaCoverage, AnEdgeIsPartlyCoveredAndTheSkyIsZero) {
+  const TempDir dir;
+  cli::QuadScene edge;
+  edge.quads = {{{{-50, -50, -2}, {0.03f, -50, -2}, {0.03f, 50, -2}, {-50, 50, -2}}, 0}};
+  edge.materials = kWhite;
+  edge.cameraPlacement = kAtOrigin;
+  const std::vector<std::string> pinhole = {"--camera", "pinhole"};
+  struct Case {
+    const char* name;
+    std::vector<std::string> camera;
+    const char* flare;
+  };
+  for (const Case& c :
+       {Case{"pinhole", pinhole, "off"}, Case{"lens", kLens, "off"}, Case{"lens", kLens, "on"}}) {
+    SCOPED_TRACE(std::string(c.name) + " --flare " + c.flare);
+    const int spp = 64;
+    const Render r = render(
+        dir, edge, {"--spp", std::to_string(spp), "--focus", "2", "--env", "constant:1", "--flare", c.flare},
+        c.camera);
+    ASSERT_EQ(r.image.width, 24);
+    const int a = r.image.channelIndex("A");
+    int wrong = 0, partial = 0;
+    for (int y = 0; y < r.image.height; ++y)
+      for (int x = 0; x < r.image.width; ++x) {
+        const float alpha = r.image.at(x, y, a);
+        wrong += (x < 11 && alpha != 1.0f) || (x > 13 && alpha != 0.0f);
+        if (x == 12) {
+          partial += alpha > 0.2f && alpha < 0.8f;
+          if (c.camera == pinhole) {
+            EXPECT_EQ(alpha * spp, std::round(alpha * spp)) << "row " << y;
+          }
+        }
+      }
+    EXPECT_EQ(wrong, 0) << "corner A " << r.image.at(0, 0, a);
+    EXPECT_EQ(partial, r.image.height) << "A at the edge " << r.image.at(12, 8, a);
   }
 }
 
