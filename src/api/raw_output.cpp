@@ -89,7 +89,7 @@ void writeRawOutput(const RawOutputOptions& o, const Image& image,
   }
   d.lensModel = info.lens;
   const FilmGeometry& film = camera.film();
-  constexpr double kFullFrameDiagonalMm = 43.2666;  // 36 x 24 mm
+  const double kFullFrameDiagonalMm = std::hypot(36.0, 24.0);  // the 35 mm film frame
   const double diagonal = std::hypot(film.sensorWidthMm, film.sensorHeightMm);
   if (info.focalLengthMm > 0 && diagonal > 0)
     d.focalLengthIn35mmFilm = int(std::lround(info.focalLengthMm * kFullFrameDiagonalMm / diagonal));

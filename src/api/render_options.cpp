@@ -87,8 +87,6 @@ EnvironmentSpec parseEnvironment(const std::string& text) {
         values.size() == 1 ? Rgb{values[0], values[0], values[0]} : Rgb{values[0], values[1], values[2]};
     return spec;
   }
-  std::string ext = std::filesystem::path(text).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (!isReadableImageExtension(text))
     throw UsageError("--env",
                      "expected none, constant:V, constant:R,G,B or a lat-long image file (.exr, .hdr, .tif, "

@@ -14,6 +14,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/ascii_lower.h"
 #include "core/error.h"
 #include "image/cineon.h"
 #include "image/exr_io.h"
@@ -29,12 +30,6 @@ namespace lensrt {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lowerExtension(const fs::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 std::string errnoReason(int err) {
   if (err == ENOSPC) return "disk full";

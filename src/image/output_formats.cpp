@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/ascii_lower.h"
+
 namespace lensrt {
 
 const std::vector<OutputFormat>& outputFormats() {
@@ -34,8 +36,7 @@ const std::vector<OutputFormat>& outputFormats() {
 }
 
 const OutputFormat* outputFormatFor(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lowerExtension(file);
   for (const OutputFormat& f : outputFormats())
     if (std::find(f.extensions.begin(), f.extensions.end(), ext) != f.extensions.end()) return &f;
   return nullptr;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ascii_lower.h"
 #include "core/error.h"
 
 namespace lensrt {
@@ -73,8 +74,7 @@ std::string purposeOf(const std::string& label) {
 }  // namespace
 
 bool isPluginInputExtension(const fs::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lowerExtension(file);
   return std::find(kExtensions.begin(), kExtensions.end(), ext) != kExtensions.end();
 }
 

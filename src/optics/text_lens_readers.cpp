@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ascii_lower.h"
 #include "core/error.h"
 #include "optics/lens_readers.h"
 #include "optics/text_lines.h"
@@ -14,19 +15,13 @@
 namespace lensrt {
 namespace {
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
-  return out;
-}
-
 // "# key: value" header comments fill the metadata; the first other comment
 // becomes the description when none is given.
 void readMetadataComment(std::string_view comment, LensPrescription& lens, std::string& firstComment,
                          const std::string& file, int line) {
   const std::size_t colon = comment.find(':');
   if (colon != std::string_view::npos) {
-    const std::string key = lower(trim(comment.substr(0, colon)));
+    const std::string key = asciiLower(trim(comment.substr(0, colon)));
     const std::string value(trim(comment.substr(colon + 1)));
     if (key == "name") return void(lens.name = value);
     if (key == "description") return void(lens.description = value);
@@ -69,7 +64,7 @@ void readAsphericTokens(std::vector<std::string_view>& tokens, Surface& s, const
   while (!tokens.empty() && tokens.back().find('=') != std::string_view::npos) {
     const std::string_view token = tokens.back();
     const std::size_t eq = token.find('=');
-    const std::string key = lower(token.substr(0, eq));
+    const std::string key = asciiLower(token.substr(0, eq));
     int slot = -1;  // 0: k, 1 + j: A_{2j+4}
     if (key == "k") {
       slot = 0;
@@ -157,7 +152,7 @@ LensPrescription parseTableLens(std::string_view text, const std::string& file) 
       readMetadataComment(c, lens, firstComment, file, l.number);
     auto tokens = tokenize(l.text);
     if (tokens.empty()) continue;
-    const std::string first = lower(tokens[0]);
+    const std::string first = asciiLower(tokens[0]);
     if (headerAllowed && first == "radius") {
       headerAllowed = false;
       continue;

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/ascii_lower.h"
 #include "core/error.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_animation.h"
@@ -214,8 +215,7 @@ bool isGlb(const std::filesystem::path& file, const std::string& name, std::uint
   in.read(reinterpret_cast<char*>(header.data()), header.size());
   const auto got = static_cast<std::size_t>(in.gcount());
   const bool magic = got >= 4 && header[0] == 'g' && header[1] == 'l' && header[2] == 'T' && header[3] == 'F';
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lowerExtension(file);
   if (!magic) {
     if (ext == ".glb") throw InputError(name, "not a binary glTF: the header does not start with 'glTF'");
     return false;

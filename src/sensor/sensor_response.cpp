@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "color/cie.h"
+#include "core/ascii_lower.h"
 #include "core/error.h"
 #include "core/printable.h"
 #include "sensor/embedded_data.h"
@@ -29,10 +30,7 @@ SensorResponse cie1931Response() {
 }
 
 bool endsWithCsv(std::string_view s) {
-  if (s.size() < 4) return false;
-  std::string tail(s.substr(s.size() - 4));
-  std::transform(tail.begin(), tail.end(), tail.begin(), [](unsigned char c) { return std::tolower(c); });
-  return tail == ".csv";
+  return s.size() >= 4 && asciiLower(s.substr(s.size() - 4)) == ".csv";
 }
 
 }  // namespace
