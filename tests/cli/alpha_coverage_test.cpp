@@ -57,6 +57,16 @@ double blockedShare(const Render& r) {
   return std::stod(r.meta.at("lensrt:blocked_camera_rays")) / (spp * r.image.width * r.image.height);
 }
 
+// Every pixel's A is 1, exactly.
+void expectOpaque(const Render& r) {
+  const int a = r.image.channelIndex("A");
+  int notOne = 0;
+  for (int y = 0; y < r.image.height; ++y)
+    for (int x = 0; x < r.image.width; ++x) notOne += r.image.at(x, y, a) != 1.0f;
+  EXPECT_EQ(notOne, 0) << "corner A " << r.image.at(0, 0, a) << ", centre A "
+                       << r.image.at(r.image.width / 2, r.image.height / 2, a);
+}
+
 // A closed 2 m box around the camera, lit inside: every sample that leaves
 // the lens hits a wall, so A is 1 in every pixel, exactly (a ratio of equal
 // counts), with the lens blocking samples and with flare's reflections.
@@ -82,12 +92,7 @@ TEST(AlphaCoverage, AClosedBoxIsOpaqueEverywhereWithAndWithoutFlare) {
     ASSERT_GT(r.image.width, 0);
     // The lens does block samples (else the test could not fail).
     EXPECT_GT(blockedShare(r), 0.02);
-    const int a = r.image.channelIndex("A");
-    int notOne = 0;
-    for (int y = 0; y < r.image.height; ++y)
-      for (int x = 0; x < r.image.width; ++x) notOne += r.image.at(x, y, a) != 1.0f;
-    EXPECT_EQ(notOne, 0) << "corner A " << r.image.at(0, 0, a) << ", centre A "
-                         << r.image.at(r.image.width / 2, r.image.height / 2, a);
+    expectOpaque(r);
   }
 }
 
@@ -137,12 +142,7 @@ TEST(AlphaCoverage, TheCornellBoxThroughALensIsOpaqueToItsCorners) {
     const Render r = renderFile(dir, cornell, kLens, {"--sensor", "33x22", "--spp", "32", "--flare", flare});
     ASSERT_EQ(r.image.width, 24);
     EXPECT_GT(blockedShare(r), 0.02);
-    const int a = r.image.channelIndex("A");
-    int notOne = 0;
-    for (int y = 0; y < r.image.height; ++y)
-      for (int x = 0; x < r.image.width; ++x) notOne += r.image.at(x, y, a) != 1.0f;
-    EXPECT_EQ(notOne, 0) << "corner A " << r.image.at(0, 0, a) << ", centre A "
-                         << r.image.at(r.image.width / 2, r.image.height / 2, a);
+    expectOpaque(r);
   }
 }
 
