@@ -2,7 +2,7 @@
 // written as a single render of it would be. The file is read once
 // (api/scene_sequence.h); under MPI whole frames go to the ranks in turn,
 // each rendering its frames alone, so every frame is bit for bit the
-// render of one process.
+// render of one process (with --focus auto, one given the first frame's focus).
 #pragma once
 
 #include <string>
@@ -19,6 +19,7 @@ struct SequenceFrame {
 };
 
 // Renders `frames` of `job` (whose output and time each frame replaces).
+// --focus auto is resolved at the first frame and held for all of them.
 // Returns the exit status: 0, or that of the first frame that did not finish.
 int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& frames, MpiJob& mpi);
 

@@ -478,6 +478,52 @@ TEST(MotionBlurCli, FramesRenderEachFrameAsFrameDoes) {
   EXPECT_NE(backwards.err.find("A <= B"), std::string::npos) << backwards.err;
 }
 
+// --frames with --focus auto focuses once, on what the centre sees at the
+// first frame, and holds it: a wall 5 m before a thin lens at t = 0 that
+// comes to 3 m at t = 1 s stays focused at 5 m in both frames (refocusing
+// each frame would breathe), while --frame 1 alone focuses at 3 m.
+TEST(MotionBlurCli, FramesHoldTheFirstFramesAutoFocus) {
+  const TempDir dir;
+  json doc = json::parse(animatedRectangle(20, 20, "translation", {0, 1}, {0, 0, 0, 0, 0, 2}));
+  doc["cameras"][0] = {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}};
+  cli::writeFile(dir / "approach.gltf", doc.dump());
+  const std::vector<std::string> common{"render",
+                                        (dir / "approach.gltf").string(),
+                                        "--camera",
+                                        "thin",
+                                        "--focal-length",
+                                        "50",
+                                        "--fstop",
+                                        "4",
+                                        "--env",
+                                        "none",
+                                        "--res",
+                                        "16x16",
+                                        "--spp",
+                                        "1",
+                                        "--shutter",
+                                        "0",
+                                        "--fps",
+                                        "1",
+                                        "-q"};
+  const auto focusOf = [&](const std::filesystem::path& file) {
+    ImageMetadata meta;
+    readImage(file, &meta);
+    return std::stod(meta.at("lensrt:focus_m"));
+  };
+  std::vector<std::string> sequence = common;
+  sequence.insert(sequence.end(), {"--frames", "0:1", "-o", (dir / "f.#.exr").string()});
+  const RunResult r = runLensrt(sequence);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(focusOf(dir / "f.0.exr"), 5.0, 1e-3);
+  EXPECT_NEAR(focusOf(dir / "f.1.exr"), 5.0, 1e-3);
+  std::vector<std::string> alone = common;
+  alone.insert(alone.end(), {"--frame", "1", "-o", (dir / "alone.exr").string()});
+  const RunResult one = runLensrt(alone);
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_NEAR(focusOf(dir / "alone.exr"), 3.0, 1e-3);
+}
+
 // A moment or a rolling shutter asked of a scene that does not move: one
 // notice each, and the image of the scene at rest.
 TEST(MotionBlurCli, TimeOnAStillSceneGivesANotice) {
