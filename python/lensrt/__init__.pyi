@@ -186,6 +186,7 @@ class Scene:
         exposure: str = "normalized",
         iso: float | None = None,
         dispersion: str | bool = "on",
+        diffraction: str | bool = "off",
         film: str | None = None,
         shift: tuple[float, float] | float | str = "0,0",
         tilt: tuple[float, float] | float | str = 0,

@@ -41,6 +41,7 @@ struct CameraSpec {
   ExposureMode exposure = ExposureMode::Normalized;
   std::optional<double> iso;                         // physical exposure's ISO speed (default 100)
   bool dispersion = true;                            // trace each sample at its wavelength
+  bool diffraction = false;                          // bend each ray by the stop's far field
   std::optional<Coating> coatings;                   // none: lossless glass
   std::optional<FilmQuantity> film;                  // none: the model's default
   LensMovements movements;                           // the film's shift and tilt (camera/lens_movements.h)

@@ -55,6 +55,7 @@ CameraModelInfo fullLensModel() {
             p.aperture = b.aperture;
             p.dispersion = o.dispersion;
             p.movements = b.movements;
+            p.diffraction = o.diffraction;
             p.coatings = o.coatings;
             if (b.flare.on) {
               p.flareReflections = b.flare.bounces;

@@ -18,6 +18,7 @@ CameraModelInfo thickLensModel() {
             p.aperture = b.aperture;
             p.lensName = b.lensName;
             p.movements = b.movements;
+            p.diffraction = b.spec.diffraction;
             if (b.spec.dispersion && hasDispersion(*b.lens)) p.dispersion.emplace(*b.lens);
             return std::make_unique<ThickLensCamera>(b.worldFromCamera, b.film, p, b.exposure);
           }};

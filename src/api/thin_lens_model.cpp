@@ -16,6 +16,7 @@ CameraModelInfo thinLensModel() {
             p.aperture = b.aperture;
             p.lensName = b.lensName;
             p.movements = b.movements;
+            p.diffraction = b.spec.diffraction;
             if (b.lens && b.spec.dispersion && hasDispersion(*b.lens)) p.dispersion.emplace(*b.lens);
             return std::make_unique<ThinLensCamera>(b.worldFromCamera, b.film, p, b.exposure);
           }};

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 
 #include "camera/lens_movements.h"
 #include "camera/projection.h"
+#include "camera/stop_diffraction.h"
 #include "core/ray.h"
 #include "core/transform.h"
 #include "core/vec.h"
@@ -31,9 +33,10 @@ struct FilmGeometry {
 };
 
 struct CameraSample {
-  Vec2f film;                  // raster position in pixels, continuous
-  Vec2f lens;                  // uniform in [0,1)^2: aperture / exit-pupil sample
-  float wavelengthNm = 550.f;  // nm: the wavelength a dispersive camera traces this sample at
+  Vec2f film;                     // raster position in pixels, continuous
+  Vec2f lens;                     // uniform in [0,1)^2: aperture / exit-pupil sample
+  float wavelengthNm = 550.f;     // nm: the wavelength a dispersive camera traces this sample at
+  Vec2f diffraction{0.5f, 0.5f};  // uniform in [0,1)^2: the far-field bend (--diffraction on only)
 };
 
 struct CameraRay {
@@ -90,6 +93,7 @@ class Camera {
   // Empty when the optics block the ray (vignetting): the sample contributes zero.
   std::optional<CameraRay> generateRay(const CameraSample& sample) const {
     std::optional<CameraRay> r = generateCameraSpaceRay(sample);
+    if (diffraction_) diffract(r, sample);
     if (!r) return std::nullopt;
     r->ray = worldFromCamera_(r->ray);
     r->ray.direction = normalize(r->ray.direction);
@@ -100,6 +104,8 @@ class Camera {
   // (the full lens does, several times faster). The same rays, bit for bit.
   void generateRays(std::span<const CameraSample> samples, std::span<std::optional<CameraRay>> out) const {
     generateCameraSpaceRays(samples, out);
+    if (diffraction_)
+      for (std::size_t i = 0; i < samples.size(); ++i) diffract(out[i], samples[i]);
     for (std::optional<CameraRay>& r : out)
       if (r) {
         r->ray = worldFromCamera_(r->ray);
@@ -110,6 +116,11 @@ class Camera {
   // True when rays depend on CameraSample::wavelengthNm (dispersion): the
   // renderer then weights each sample's RGB by its wavelength's response.
   virtual bool tracesWavelengths() const { return false; }
+  // --diffraction on: every ray is bent by the stop's far field at its
+  // sample's wavelength (CameraSample::diffraction), so the renderer gives
+  // each sample a wavelength, as for dispersion.
+  bool diffracts() const { return diffraction_ != nullptr; }
+  const StopDiffraction* diffraction() const { return diffraction_.get(); }
 
   // Model name and parameters for EXR metadata and reports, e.g. "pinhole yfov=39.6deg".
   virtual std::string describe() const = 0;
@@ -139,6 +150,10 @@ class Camera {
  protected:
   // Ray in camera space (origin in metres, any direction length).
   virtual std::optional<CameraRay> generateCameraSpaceRay(const CameraSample& sample) const = 0;
+  // A model with an aperture turns --diffraction on by giving its stop.
+  void setDiffraction(std::shared_ptr<const StopDiffraction> diffraction) {
+    diffraction_ = std::move(diffraction);
+  }
   // out.size() == samples.size(). By default one at a time.
   virtual void generateCameraSpaceRays(std::span<const CameraSample> samples,
                                        std::span<std::optional<CameraRay>> out) const {
@@ -148,6 +163,17 @@ class Camera {
  private:
   Transform worldFromCamera_;
   Transform cameraFromWorld_;  // identity when the pose is singular (it then renders nothing sensible either)
+  std::shared_ptr<const StopDiffraction> diffraction_;  // none: geometric rays
+
+  void diffract(std::optional<CameraRay>& r, const CameraSample& sample) const {
+    if (!r) return;
+    const std::optional<Vec3f> bent =
+        diffraction_->bend(normalize(r->ray.direction), sample.diffraction, sample.wavelengthNm);
+    if (bent)
+      r->ray.direction = *bent;
+    else
+      r.reset();
+  }
   FilmGeometry film_;
 };
 

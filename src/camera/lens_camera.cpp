@@ -36,6 +36,18 @@ LensCamera::LensCamera(const Transform& worldFromCamera, const FilmGeometry& fil
   stopRadius_ = lens_->prescription().surfaces[p.stopIndex].apertureDiameter / 2.0;
   if (params.aperture.blades) polygon_.emplace(stopRadius_ / widen, params.aperture);
   filmZ_ = lens_->rearZ() + focusFilmDistance(*lens_, params.focusMetres * 1000.0);
+  if (params.diffraction) {
+    // The stop in units of its radius (the blades' corners, the mask's
+    // scale), imaged to the entrance pupil, whose radius that unit becomes.
+    std::function<double(double, double)> stop;
+    if (polygon_ || params.mask)
+      stop = [polygon = polygon_, mask = params.mask, radius = stopRadius_](double x, double y) {
+        const Vec2d at{x * radius, y * radius};
+        if (polygon && !polygon->contains(at)) return 0.0;
+        return mask ? mask->transmittance(at, radius) : 1.0;
+      };
+    setDiffraction(std::make_shared<const StopDiffraction>(stop, p.entrancePupilDiameter / 2.0));
+  }
   chiefRays_ = std::make_unique<const ChiefRays>(*lens_, filmZ_);
   if (!params.movements.any()) {
     bounds_ = std::make_unique<ExitPupilBounds>(*lens_, filmZ_, sensorHalfDiagonalMm(film) * (1.0 + 1e-6),
@@ -85,7 +97,8 @@ std::string LensCamera::describe() const {
          (params_.flareReflections && params_.barrelReflectance > 0.0 ? barrelText(params_.barrelReflectance)
                                                                       : std::string()) +
          (params_.coatings ? " coatings=" + coatingName(*params_.coatings) : std::string()) +
-         (params_.mask ? " mask=" + params_.mask->describe() : std::string()) + params_.movements.describe();
+         (params_.mask ? " mask=" + params_.mask->describe() : std::string()) +
+         (params_.diffraction ? " diffraction=on" : "") + params_.movements.describe();
 }
 
 CameraInfo LensCamera::info() const {

@@ -28,6 +28,9 @@ struct LensCameraParams {
   // A grey-scale mask over the stop (camera/aperture_mask.h): each ray's
   // weight times the mask where it crosses the stop. Null: the open stop.
   std::shared_ptr<const ApertureMask> mask;
+  // --diffraction on: rays bent by the entrance pupil's far field, the
+  // stop's shape (blades, mask) at the pupil's size (stop_diffraction.h).
+  bool diffraction = false;
   // Stray light (lens flare): the most reflections a path takes in the lens
   // (LensSystem::traceFromFilmWithFlare), none: off. Needs coatings set (the
   // reflectance). Blades and a mask shape the stop at every crossing, so

@@ -62,6 +62,11 @@ ThickLensCamera::ThickLensCamera(const Transform& worldFromCamera, const FilmGeo
   onAxisWeight_ = exposureScale(exposure, params.fNumber) * exitPupil_.area() / (lxp * lxp);
   toRearPrincipal_ = (params.rearPrincipalZ - filmZ_) / (params.exitPupilZ - filmZ_);
   filmToExitPupil_ = lxp;
+  // The entrance pupil: the exit pupil's shape at the entrance pupil's size.
+  if (params.diffraction)
+    setDiffraction(std::make_shared<const StopDiffraction>(
+        StopDiffraction::apertureStop(exitPupil_),
+        exitPupil_.circumradius() * params.entrancePupilDiameter / params.exitPupilDiameter));
   checkLensMovements(params.movements, film, "thick lens");
   if (params.movements.tilted()) {
     const double nearest = filmZ_ + movedFilm_.depthRange(film).min;
@@ -76,7 +81,8 @@ std::string ThickLensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "thick lens f=%gmm t=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
                 params_.rearPrincipalZ - params_.frontPrincipalZ, params_.fNumber,
                 focusText(params_.focusMetres).c_str(), lensrt::describe(params_.aperture).c_str());
-  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "") + params_.movements.describe();
+  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "") +
+         (params_.diffraction ? " diffraction=on" : "") + params_.movements.describe();
 }
 
 CameraInfo ThickLensCamera::info() const {

@@ -30,6 +30,8 @@ struct ThickLensParams {
   // where the axis meets the film; focusMetres is then where the plane of
   // focus crosses the axis.
   LensMovements movements;
+  // --diffraction on: rays bent by the entrance pupil's far field (stop_diffraction.h).
+  bool diffraction = false;
 };
 
 // Cardinal points and pupils of a lens's paraxial data, at f-number `fNumber`

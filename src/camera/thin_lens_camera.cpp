@@ -34,6 +34,10 @@ ThinLensCamera::ThinLensCamera(const Transform& worldFromCamera, const FilmGeome
   if (params.movements.tilted() && !(v_ + movedFilm_.depthRange(film).min > 0.0))
     throw std::invalid_argument("thin lens: the tilted film reaches the lens");
   onAxisWeight_ = exposureScale(exposure, params.fNumber) * aperture_.area() / (v_ * v_);
+  // The lens is its own entrance pupil.
+  if (params.diffraction)
+    setDiffraction(std::make_shared<const StopDiffraction>(StopDiffraction::apertureStop(aperture_),
+                                                           aperture_.circumradius()));
 }
 
 std::string ThinLensCamera::describe() const {
@@ -41,7 +45,8 @@ std::string ThinLensCamera::describe() const {
   std::snprintf(buf, sizeof buf, "thin lens f=%gmm f/%g focus=%s aperture=%s", params_.focalLengthMm,
                 params_.fNumber, focusText(params_.focusMetres).c_str(),
                 lensrt::describe(params_.aperture).c_str());
-  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "") + params_.movements.describe();
+  return std::string(buf) + (params_.dispersion ? " dispersion=on" : "") +
+         (params_.diffraction ? " diffraction=on" : "") + params_.movements.describe();
 }
 
 CameraInfo ThinLensCamera::info() const {

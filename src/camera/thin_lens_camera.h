@@ -22,6 +22,8 @@ struct ThinLensParams {
   // The film's shift and tilt (lens_movements.h); focusMetres is then where
   // the plane of focus crosses the optical axis.
   LensMovements movements;
+  // --diffraction on: rays bent by the aperture's far field (stop_diffraction.h).
+  bool diffraction = false;
 };
 
 // An ideal thin lens at the camera origin: every point of the focus plane

@@ -36,7 +36,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   // Spectral transport when the settings have a film response; a camera
   // that traces wavelengths (dispersion) follows each sample's hero.
   const FilmResponse* response = settings.filmResponse.get();
-  const bool dispersive = camera.tracesWavelengths();
+  // A diffracting camera bends each ray by its wavelength, as a dispersive one traces it.
+  const bool dispersive = camera.tracesWavelengths() || camera.diffracts();
   const std::optional<AdaptiveSampling>& adaptive = settings.adaptive;
 
   const auto renderTile = [&](int t) {
@@ -91,6 +92,7 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           CameraSample& cs = samples[k];
           cs.film = {float(columns[j / spp]) + offset.x, float(y) + offset.y};
           cs.lens = u.get2D(kDimLens);
+          if (camera.diffracts()) cs.diffraction = sampler.get2D(kDimDiffraction);
           // The sampler's 1D stream is a scrambled van der Corput sequence in
           // the sample index: a pixel's wavelengths are stratified (any
           // power-of-two prefix, so passes and resumes keep it). Cameras

@@ -25,6 +25,10 @@ enum SampleDimension : std::uint32_t {
   kDimFirstBounce = 3,
 };
 inline constexpr std::uint32_t kDimensionsPerBounce = 5;  // light pick, light 2D, lobe, BSDF 2D, roulette
+// 2D: the camera ray's diffraction bend (--diffraction on). A stream of its
+// own past any path's dimensions, so turning it on leaves the others as
+// they were.
+inline constexpr std::uint32_t kDimDiffraction = 0x00d1ff00u;
 
 std::uint32_t hashCombine(std::uint32_t seed, std::uint32_t v);
 std::uint32_t hash64(std::uint64_t v);

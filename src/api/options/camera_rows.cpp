@@ -170,6 +170,17 @@ void addCameraRows(std::vector<Option>& table) {
     o.usedBy = kLensModels;
   }
   {
+    Option& o = add(onOff(
+        row("--diffraction", "diffraction", "on|off",
+            "on: bend each camera ray by the Fraunhofer far field of the stop's shape (round, --blades, "
+            "--aperture-mask) at the ray's wavelength: the Airy disc of radius 1.22 lambda N and the "
+            "blades' starbursts; thin, thick and the full lens (default off: geometric rays)",
+            "on", PyValue::Switch),
+        [](auto& s) -> auto& { return s.camera.diffraction; }));
+    o.applies = notPinhole;
+    o.usedBy = kLensModels;
+  }
+  {
     Option o =
         row("--film", "film", "radiance|irradiance",
             "what a pixel records: radiance (the mean radiance along the camera rays, no cos^4, no "
