@@ -196,7 +196,11 @@ class PyScene {
     if (out->result.droppedSamples > 0)
       warnings.sink().warn(
           fmt::format("{} samples with NaN or infinite radiance were dropped", out->result.droppedSamples));
-    warnings.emit();
+    // The library's warnings name the command line's flags (--env none,
+    // --sensor): in Python, the keywords (env='none', sensor).
+    std::vector<std::string> said;
+    for (const std::string& w : warnings.messages()) said.push_back(inKeywords(w));
+    WarningList::emit(file(), said);
     return out;
   }
 

@@ -18,11 +18,14 @@ namespace lensrt {
 // of luminance) that the scene's punctual lights and emissive triangles give
 // there, facing the ray, ignoring shadows (a lamp inside its shade still
 // counts). A probe goes on through transmitting surfaces, as camera paths
-// do: a lamp behind a window is seen. A surface that glows itself adds pi
-// times its radiance, the irradiance that would make a white diffuse surface
-// as bright. An emissive triangle counts as a point source at its centroid
-// with the radiance of its factor times its emissive texture (four sample
-// points), and gives at most pi L, what a surface touching it would get.
+// do: a lamp behind a window is seen. The window's transmittance is not
+// applied: what the camera sees through it is dimmed alike under the scene's
+// light and under the sky, so the comparison below does not depend on it.
+// A surface that glows itself adds pi times its radiance, the irradiance
+// that would make a white diffuse surface as bright. An emissive triangle
+// counts as a point source at its centroid with the radiance of its factor
+// times its emissive texture (four sample points), and gives at most pi L,
+// what a surface touching it would get.
 // nullopt when no ray sees a surface.
 std::optional<double> medianEmitterIrradiance(const RenderScene& scene, const MaterialTable& materials,
                                               std::span<const Ray> probes);

@@ -14,13 +14,13 @@
 #include "api/option_table.h"
 #include "api/output_file.h"
 #include "api/render_plan.h"
-#include "run/checkpoint.h"
-#include "run/distributed_render.h"
-#include "run/interrupt.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "image/spp_channel.h"
 #include "render/progress.h"
+#include "run/checkpoint.h"
+#include "run/distributed_render.h"
+#include "run/interrupt.h"
 
 namespace lensrt {
 int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
@@ -97,8 +97,7 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
     // Every rank is set up: go on together, or stop together with the first error.
     if (const auto failure = setUpTogether(mpi, spec.scene.file, identity)) {
       if (leader)
-        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, mpi.size(),
-                   failure->line);
+        fmt::print(stderr, "lensrt: error: rank {} of {}: {}\n", failure->rank, mpi.size(), failure->line);
       return failure->status;
     }
   }
@@ -115,8 +114,8 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
   auto lastCheckpoint = started;
   GatherCost gather;  // under MPI, once the render is done
   // The metadata of an image to write; with --noise on, the sensor reads it out first.
-  const auto metadataOf = [&](RenderJobResult& r) {
-    ImageMetadata m = plan.finish(r, plan.shot(), args.commandLine, warnings);
+  const auto metadataOf = [&](RenderJobResult& r, Warnings& readoutWarnings) {
+    ImageMetadata m = plan.finish(r, plan.shot(), args.commandLine, readoutWarnings);
     if (shared) m["lensrt:mpi_ranks"] = std::to_string(mpi.size());
     if (gather.bytes > 0) {
       m["lensrt:gather_seconds"] = fmt::format("{:.3f}", gather.seconds);
@@ -133,7 +132,11 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
       RenderJobResult partial;
       partial.output = renderOutput(camera, s, settings.flareLight.get());
       partial.seconds = std::chrono::duration<double>(now - started).count();
-      const ImageMetadata metadata = metadataOf(partial);
+      // A checkpoint's readout says nothing: its clipped share changes from
+      // one to the next as the noise settles, and the final image (written
+      // on an interrupt too) gives the one warning.
+      Warnings unsaid;
+      const ImageMetadata metadata = metadataOf(partial, unsaid);
       writeCheckpoint(args.output, s, partial.output.image, metadata);
       lastCheckpoint = std::chrono::steady_clock::now();
     };
@@ -156,7 +159,7 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
 
   // 3. Write: with the running sums when it can be continued.
   {
-    ImageMetadata metadata = metadataOf(result);
+    ImageMetadata metadata = metadataOf(result, warnings);
     ImageWriteOptions options;
     options.display = args.display;
     if (args.display) {

@@ -4,6 +4,7 @@ pairs of frames at 12 exposures, temporal variance from their difference (the
 fixed patterns cancel), electrons from lensrt:sensor_electrons_per_value."""
 
 import json
+import warnings
 
 import numpy as np
 import pytest
@@ -126,3 +127,25 @@ def test_bad_sensor_files(wall, tmp_path):
         render(tmp_path / "nowhere.json")
     with pytest.raises(ValueError, match="sensor_params: describes the sensor's noise, which needs noise='on'"):
         wall.render(res=(8, 8), spp=1, sensor_params="default")
+
+
+def test_clipping_most_pixels_is_a_python_warning(wall):
+    """As the command line's warning line (tests/cli/sensor_noise_cli_test.cpp):
+    400 um pixels (90 x 60 on 36 x 24 mm) collect 2.55e8 electrons at an image
+    value of 1 and every pixel of the wall clips; 4 um pixels at 1/500 s hold
+    its brightest 0.55 in 14000 e and nothing is said. The way out names the
+    keywords, not the flags."""
+    def render(**extra):
+        return wall.render(res=(90, 60), spp=1, film="irradiance", exposure="physical", noise=True, **extra)
+
+    with pytest.warns(UserWarning) as said:
+        render()
+    clipping = [str(w.message) for w in said if "of the pixels clip" in str(w.message)]
+    assert len(clipping) == 1, clipping
+    assert clipping[0].startswith(str(SCENES / "flat_wall.gltf") + ": 100% of the pixels clip")
+    assert "its 400 um pixels" in clipping[0]
+    assert "(a smaller sensor, or more of them with res) or a lower exposure (iso, shutter, fstop)" in clipping[0]
+    assert "--" not in clipping[0]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        render(sensor=(0.36, 0.24), shutter=1 / 500)
