@@ -74,7 +74,7 @@ std::vector<std::byte> FilmState::toBytes() const {
   if (aovs_.ids())
     throw std::invalid_argument(
         "the ID AOVs (crypto_object, crypto_material, object_id) cannot be saved "
-        "as running sums yet: render them without tiles, ranks or a checkpoint");
+        "as running sums yet: render them without ranks or a checkpoint");
   std::vector<std::byte> bytes(kHeaderBytes + pixels_.size() * PixelAccumulator::kStateBytes);
   std::byte* p = bytes.data();
   std::memcpy(p, kMagic.data(), kMagic.size());

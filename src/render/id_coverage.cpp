@@ -38,8 +38,12 @@ std::string jsonString(const std::string& s) {
 void addLayer(ImageMetadata& m, const std::string& layer, const std::map<std::string, std::uint32_t>& ids) {
   const std::string key = fmt::format("{:08x}", murmurHash3X86_32(layer)).substr(0, 7);
   std::string manifest = "{";
-  for (const auto& [name, bits] : ids)
-    manifest += (manifest.size() > 1 ? "," : "") + jsonString(name) + fmt::format(":\"{:08x}\"", bits);
+  for (const auto& [name, bits] : ids) {
+    // No operator+ on a const char* conditional (GCC 12's -Wrestrict false alarm).
+    if (manifest.size() > 1) manifest += ',';
+    manifest += jsonString(name);
+    manifest += fmt::format(":\"{:08x}\"", bits);
+  }
   manifest += "}";
   const std::string prefix = "cryptomatte/" + key + "/";
   m[prefix + "name"] = layer;
