@@ -15,6 +15,7 @@
 #include "image/image_io.h"
 #include "image/spp_channel.h"
 #include "render/flare_light_pass.h"
+#include "render/id_coverage.h"
 #include "render/light_level.h"
 #include "render/progress.h"
 #include "render/render_identity.h"
@@ -299,6 +300,7 @@ ImageMetadata RenderJob::metadata(const Camera& camera, const Exposure& exposure
     metadata["lensrt:region"] = PixelRegion{out.image.originX, out.image.originX + out.image.width,
                                             out.image.originY, out.image.originY + out.image.height}
                                     .describe();
+  metadata.merge(cryptomatteMetadata(scene_->geometry().desc(), settings.aovs));
   metadata.insert(identity.begin(), identity.end());  // keys already set stay
   metadata.merge(cameraMetadata(camera, exposure));
   // The film's colour: the transport, and what its RGB means.

@@ -114,8 +114,16 @@ AovSelection parseAovs(const std::vector<std::string>& names) {
       a.albedo = true;
     else if (n == "variance")
       a.variance = true;
+    else if (n == "crypto_object")
+      a.cryptoObject = true;
+    else if (n == "crypto_material")
+      a.cryptoMaterial = true;
+    else if (n == "object_id")
+      a.objectId = true;
     else
-      throw UsageError("--aov", "unknown AOV '" + n + "' (choose from depth, normal, albedo, variance)");
+      throw UsageError("--aov", "unknown AOV '" + n +
+                                    "' (choose from depth, normal, albedo, variance, crypto_object, "
+                                    "crypto_material, object_id)");
   }
   return a;
 }

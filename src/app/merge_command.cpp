@@ -73,11 +73,12 @@ int runMerge(const MergeArgs& args) {
   }
 
   // The whole render's metadata: the first part's, with the counts summed.
-  // Only lensrt's own keys: the file format's (data window, compression...)
-  // are the writer's business.
+  // Only lensrt's own keys and the Cryptomatte layers' (the same in every
+  // part: the manifest lists the whole scene); the file format's (data
+  // window, compression...) are the writer's business.
   ImageMetadata meta;
   for (const auto& [key, value] : metas[0])
-    if (key.rfind("lensrt:", 0) == 0) meta[key] = value;
+    if (key.rfind("lensrt:", 0) == 0 || key.rfind("cryptomatte/", 0) == 0) meta[key] = value;
   meta.erase("lensrt:region");
   meta.erase("lensrt:sums_sha256");
   std::uint64_t nan = 0, samples = 0, blocked = 0;

@@ -13,6 +13,12 @@ std::vector<std::string> filmChannels(const AovSelection& aovs) {
   if (aovs.albedo) c.insert(c.end(), {"albedo.R", "albedo.G", "albedo.B"});
   if (aovs.variance) c.insert(c.end(), {"variance.R", "variance.G", "variance.B"});
   if (aovs.spp) c.push_back("spp");
+  for (const auto& [on, layer] : {std::pair{aovs.cryptoObject, kCryptoObjectLayer},
+                                  std::pair{aovs.cryptoMaterial, kCryptoMaterialLayer}})
+    if (on)
+      for (const char* rank : {"00", "01", "02"})
+        for (const char* k : {".R", ".G", ".B", ".A"}) c.push_back(std::string(layer) + rank + k);
+  if (aovs.objectId) c.push_back("object_id");
   return c;
 }
 

@@ -19,7 +19,16 @@ struct AovSelection {
   bool albedo = false;
   bool variance = false;
   bool spp = false;
+  // ID AOVs (render/id_coverage.h), written after the others:
+  bool cryptoObject = false;    // CryptoObject00.RGBA..02.RGBA: glTF node names
+  bool cryptoMaterial = false;  // CryptoMaterial00.RGBA..02.RGBA: material names
+  bool objectId = false;        // object_id: the most covered node index, -1 background
+  bool ids() const { return cryptoObject || cryptoMaterial || objectId; }
 };
+
+// The Cryptomatte layers' names, as in the channels and the manifest.
+inline constexpr const char* kCryptoObjectLayer = "CryptoObject";
+inline constexpr const char* kCryptoMaterialLayer = "CryptoMaterial";
 
 std::vector<std::string> filmChannels(const AovSelection& aovs);
 

@@ -25,6 +25,7 @@ std::int32_t aovBits(const AovSelection& a) {
 FilmState::FilmState(const PixelRegion& region, const AovSelection& aovs)
     : region_(region), aovs_(aovs), pixels_(region.empty() ? 0 : region.pixelCount()) {
   if (region.empty()) throw std::invalid_argument("the region to render is empty");
+  if (aovs.ids()) ids_.resize(pixels_.size());
 }
 
 std::uint64_t FilmState::droppedSamples() const {
@@ -49,10 +50,31 @@ Image FilmState::image(int frameWidth, int frameHeight) const {
   }
   const std::size_t channels = out.channelCount();
   for (std::size_t i = 0; i < pixels_.size(); ++i) pixels_[i].write(aovs_, &out.pixels[i * channels]);
+  if (aovs_.ids()) {
+    // The ID channels come last (filmChannels).
+    const std::size_t first = channels - (aovs_.cryptoObject ? 4 * 3 : 0) -
+                              (aovs_.cryptoMaterial ? 4 * 3 : 0) - (aovs_.objectId ? 1 : 0);
+    for (std::size_t i = 0; i < pixels_.size(); ++i) {
+      float* p = &out.pixels[i * channels + first];
+      if (aovs_.cryptoObject) {
+        ids_[i].writeRanks(false, p);
+        p += 2 * kCryptoRanks;
+      }
+      if (aovs_.cryptoMaterial) {
+        ids_[i].writeRanks(true, p);
+        p += 2 * kCryptoRanks;
+      }
+      if (aovs_.objectId) *p = float(ids_[i].topNode());
+    }
+  }
   return out;
 }
 
 std::vector<std::byte> FilmState::toBytes() const {
+  if (aovs_.ids())
+    throw std::invalid_argument(
+        "the ID AOVs (crypto_object, crypto_material, object_id) cannot be saved "
+        "as running sums yet: render them without ranks or a checkpoint");
   std::vector<std::byte> bytes(kHeaderBytes + pixels_.size() * PixelAccumulator::kStateBytes);
   std::byte* p = bytes.data();
   std::memcpy(p, kMagic.data(), kMagic.size());

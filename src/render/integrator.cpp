@@ -135,6 +135,8 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
       out.distance = hit->t;
       out.normal = sp.frame.n;
       out.albedo = sp.albedo;
+      out.instance = hit->instance;
+      out.material = hit->material;
     }
     // A still emitter seen through a lens reflection is the flare light pass's.
     if (maxComponent(sp.emission) > 0 &&

@@ -32,6 +32,8 @@ struct PathSample {
   float distance = 0;     // along the unit camera ray, metres
   Vec3f normal{0, 0, 0};  // world shading normal at the first hit, facing the camera
   Rgb albedo{0, 0, 0};    // base colour at the first hit
+  int instance = -1;      // the first hit's SceneDesc instance (-1: no hit)
+  int material = -1;      // the first hit's material (-1: the default material)
 };
 
 class Integrator {
@@ -51,6 +53,7 @@ class Integrator {
   // The sampler dimensions a camera path can use, camera's included (the
   // blocks it asks for; see PixelSeeds).
   std::uint32_t sampleDimensions() const;
+  const RenderScene& scene() const { return scene_; }
 
  private:
   // What reaches a punctual light along a shadow ray: 1 when nothing is in

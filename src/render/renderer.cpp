@@ -39,6 +39,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   // A diffracting camera bends each ray by its wavelength, as a dispersive one traces it.
   const bool dispersive = camera.tracesWavelengths() || camera.diffracts();
   const std::optional<AdaptiveSampling>& adaptive = settings.adaptive;
+  const std::optional<SceneIds> ids =
+      state.aovs().ids() ? std::optional<SceneIds>(integrator.scene().desc()) : std::nullopt;
 
   const auto renderTile = [&](int t) {
     const int x0 = region.x0 + (t % tilesX) * tile, y0 = region.y0 + (t / tilesX) * tile;
@@ -132,6 +134,17 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             PathSample path = integrator.trace(cr->ray, samplers[k], lambdas[k], cr->lensReflected);
             if (!dispersionWeights.empty()) path.radiance = path.radiance * dispersionWeights[k];
             acc.add(path, cr->weight, cr->lensReflected);
+            if (ids && !cr->lensReflected) {
+              const std::size_t m = std::size_t(path.material + 1);
+              const std::uint32_t materialBits =
+                  path.hit && m < ids->materialBits.size() ? ids->materialBits[m] : 0;
+              if (path.hit && path.instance >= 0 && std::size_t(path.instance) < ids->instanceBits.size())
+                state.ids(columns[j / spp], y)
+                    .add(ids->instanceBits[std::size_t(path.instance)],
+                         ids->instanceNode[std::size_t(path.instance)], materialBits, path.material);
+              else
+                state.ids(columns[j / spp], y).add(0, -1, 0, -1);
+            }
           }
         }
       }

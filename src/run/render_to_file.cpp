@@ -45,6 +45,18 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw UsageError("--checkpoint/--resume",
                      "need an .exr output (-o OUT.exr), the image that is continued");
+  // The ID AOVs' per-pixel id counts are not part of the running sums, so a
+  // checkpoint could not continue them and ranks could not send them back.
+  // (--tile and --crop parts are whole pixels: lensrt merge joins them.)
+  if (spec.aovs.ids() && (args.checkpointSeconds > 0 || !args.resume.empty()))
+    throw UsageError("--aov",
+                     "crypto_object, crypto_material and object_id cannot be checkpointed or "
+                     "resumed (their id counts are not in the running sums): drop --checkpoint/--resume");
+  if (spec.aovs.ids() && shared)
+    throw UsageError("--aov", fmt::format("crypto_object, crypto_material and object_id cannot be rendered "
+                                          "across {} MPI ranks (their id counts are not sent): run one rank, "
+                                          "or split the frame with --tile and lensrt merge",
+                                          mpi.size()));
   if (leader && !args.resume.empty() && !std::filesystem::exists(args.resume, ec))
     throw InputError(args.resume, "no such checkpoint");
   const std::string& envFile = spec.environment.file;
@@ -168,7 +180,7 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
       shown += args.display->view.empty() ? "(default view)" : args.display->view;
       metadata["lensrt:ocio_display_view"] = shown;
     }
-    if (args.checkpointSeconds > 0 || !finished)
+    if ((args.checkpointSeconds > 0 || !finished) && !spec.aovs.ids())
       writeCheckpoint(args.output, state, result.output.image, metadata, options);
     else
       writeOutputImage(args.output, result.output.image, metadata, options);
@@ -178,7 +190,11 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
                spec.scene.file, result.output.droppedSamples);
   if (!finished) {
-    if (!args.quiet)
+    if (!args.quiet && spec.aovs.ids())
+      fmt::print(stderr,
+                 "lensrt: interrupted: wrote {} with {} of {} spp (not continuable: it has ID AOVs)\n",
+                 args.output, state.samplesDone(), settings.samplesPerPixel);
+    else if (!args.quiet)
       fmt::print(stderr, "lensrt: interrupted: wrote {} with {} of {} spp (continue with --resume {})\n",
                  args.output, state.samplesDone(), settings.samplesPerPixel, args.output);
     return interrupt.signal() ? interrupt.exitStatus() : 128 + rankSignal;

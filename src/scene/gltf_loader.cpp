@@ -429,6 +429,10 @@ class Traversal {
       for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
     }
     if (mode == Visit::WorldsOnly) return;
+    desc_.nodeNames.clear();
+    for (std::size_t i = 0; i < ctx_.model.nodes.size(); ++i)
+      desc_.nodeNames.push_back(ctx_.model.nodes[i].name.empty() ? "node" + std::to_string(i)
+                                                                 : ctx_.model.nodes[i].name);
     // Every node's world transform first: a skin needs its joints' wherever
     // they sit in the tree.
     for (const int index : order)
@@ -468,7 +472,7 @@ class Traversal {
       // node's own transform does not apply (glTF 2.0 3.7.3).
       const std::vector<Transform::Matrix> joints = jointMatrices(index, node.skin);
       for (const int mesh : gltf::convertMesh(ctx_, node.mesh, desc_.meshes, stats_, weights, &joints))
-        desc_.instances.push_back({mesh, Transform()});
+        desc_.instances.push_back({.mesh = mesh, .worldFromObject = Transform(), .node = index});
       return;
     }
     auto [it, inserted] = meshes_.try_emplace(std::pair{node.mesh, weights});
@@ -479,7 +483,8 @@ class Traversal {
     else
       placements.push_back(world);
     for (const Transform& xf : placements)
-      for (const int mesh : it->second) desc_.instances.push_back({mesh, xf});
+      for (const int mesh : it->second)
+        desc_.instances.push_back({.mesh = mesh, .worldFromObject = xf, .node = index});
   }
 
   // Each joint's world transform times its inverse bind matrix.

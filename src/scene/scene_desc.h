@@ -118,6 +118,7 @@ struct MeshInstance {
     Transform worldFromObject;
   };
   std::vector<Step> motion{};
+  int node = -1;  // the glTF node that places it (SceneDesc::nodeNames), -1: none
   bool moves() const { return !motion.empty(); }
 };
 
@@ -165,6 +166,9 @@ struct SceneDesc {
   std::vector<Texture> textures;
   std::vector<PunctualLight> lights;
   std::vector<CameraDesc> cameras;  // in the order the default scene's traversal finds them
+  // Every glTF node's name, by node index ("node<i>" where the file gives
+  // none): the ID AOVs' names.
+  std::vector<std::string> nodeNames;
   // The moment the nodes are posed at, "time=1.25 animation=all", when the
   // file has animations; empty when it has none (part of a render's identity).
   std::string pose;

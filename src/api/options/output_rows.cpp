@@ -10,11 +10,14 @@ namespace lensrt {
 void addOutputRows(std::vector<Option>& table) {
   const auto add = [&table](Option o) -> Option& { return addRow(table, "output", std::move(o)); };
   {
-    Option o = row("--aov", "aov", "NAMES",
-                   "extra EXR channels, comma separated: depth (depth.Z, metres), normal (normal.X/Y/Z, "
-                   "world), albedo (albedo.R/G/B), variance (variance.R/G/B of the pixel mean), e.g. --aov "
-                   "depth,variance",
-                   "depth", PyValue::List);
+    Option o =
+        row("--aov", "aov", "NAMES",
+            "extra EXR channels, comma separated: depth (depth.Z, metres), normal (normal.X/Y/Z, "
+            "world), albedo (albedo.R/G/B), variance (variance.R/G/B of the pixel mean), crypto_object and "
+            "crypto_material (Cryptomatte layers CryptoObject00-02, CryptoMaterial00-02 of glTF node and "
+            "material names), object_id (the most covered node index, -1 background), e.g. --aov "
+            "depth,variance",
+            "depth", PyValue::List);
     o.repeatable = true;
     o.set = [](RenderSpec& s, const std::string& text) {
       std::vector<std::string> names;
@@ -29,12 +32,17 @@ void addOutputRows(std::vector<Option>& table) {
       s.aovs.normal |= more.normal;
       s.aovs.albedo |= more.albedo;
       s.aovs.variance |= more.variance;
+      s.aovs.cryptoObject |= more.cryptoObject;
+      s.aovs.cryptoMaterial |= more.cryptoMaterial;
+      s.aovs.objectId |= more.objectId;
     };
     o.show = [](const RenderSpec& s) {
       std::string names;
       for (const auto& [on, name] :
            {std::pair{s.aovs.depth, "depth"}, std::pair{s.aovs.normal, "normal"},
-            std::pair{s.aovs.albedo, "albedo"}, std::pair{s.aovs.variance, "variance"}})
+            std::pair{s.aovs.albedo, "albedo"}, std::pair{s.aovs.variance, "variance"},
+            std::pair{s.aovs.cryptoObject, "crypto_object"},
+            std::pair{s.aovs.cryptoMaterial, "crypto_material"}, std::pair{s.aovs.objectId, "object_id"}})
         if (on) {
           if (!names.empty()) names += ',';
           names += name;
