@@ -7,6 +7,7 @@
 // about 5% of it falls outside the lamp's sharp disc. The bits do not depend on the thread count or tiles.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -87,6 +88,23 @@ TEST(DiffractionCli, TheSameBitsOnAnyThreadsAndTiles) {
   const Image two = renderLamp(dir, "two.exr", {"--diffraction", "on", "--threads", "2", "--tile-size", "8"});
   ASSERT_GT(one.width, 0);
   EXPECT_EQ(one.pixels, two.pixels);
+}
+
+// RGB transport diffracts too (each sample at its own wavelength, weighted
+// into RGB); the pinhole has no aperture and says so.
+TEST(DiffractionCli, RgbTransportDiffractsAndThePinholeRefuses) {
+  const TempDir dir;
+  const Image off = renderLamp(dir, "off.exr", {"--spectral", "off"});
+  const Image on = renderLamp(dir, "on.exr", {"--spectral", "off", "--diffraction", "on"});
+  ASSERT_GT(on.width, 0);
+  EXPECT_NEAR(sumOf(on) / sumOf(off), 1.0, 0.005);
+  EXPECT_GT(outsideShare(on, off), 0.03);
+  const RunResult pinhole =
+      runLensrt({"render", std::string(LENSRT_SOURCE_DIR) + "/scenes/dof_row.gltf", "--diffraction", "on",
+                 "--res", "16x9", "-o", (dir / "p.exr").string()});
+  EXPECT_EQ(pinhole.status, 2);
+  EXPECT_NE(pinhole.err.find("--diffraction: the pinhole has no aperture"), std::string::npos) << pinhole.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "p.exr"));
 }
 
 }  // namespace
