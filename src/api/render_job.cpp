@@ -92,8 +92,13 @@ RenderJob::RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& opt
   const SceneDesc& desc = scene_->geometry().desc();
   const float defaultAspect = float(kDefaultWidth) / float(kDefaultHeight);
   const float aspectGuess = res && res->height > 0 ? float(res->width) / float(res->height) : defaultAspect;
-  gltfCamera_ =
-      asFlagError("--camera-node", [&] { return selectCamera(desc, options.cameraNode, aspectGuess); });
+  // The field a framed view fits the scene to, at an aspect ratio.
+  const auto framingYfov = [&options](float aspect) {
+    return options.framingField && aspect > 0 ? options.framingField(aspect) : FramingField{};
+  };
+  gltfCamera_ = asFlagError("--camera-node", [&] {
+    return selectCamera(desc, options.cameraNode, aspectGuess, framingYfov(aspectGuess));
+  });
   // Without --res (or with a width only) the height follows the glTF camera's
   // aspect ratio when it has one, else 16:9.
   width_ = res ? res->width : kDefaultWidth;
@@ -105,7 +110,8 @@ RenderJob::RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& opt
   }
   if (!res || res->height == 0)
     gltfCamera_ = asFlagError("--camera-node", [&] {
-      return selectCamera(desc, options.cameraNode, float(width_) / float(height_));
+      const float aspect = float(width_) / float(height_);
+      return selectCamera(desc, options.cameraNode, aspect, framingYfov(aspect));
     });
   if (options.worldFromCamera) gltfCamera_.worldFromCamera = *options.worldFromCamera;
   environment_ = std::make_unique<Environment>(makeEnvironment(options.environment));

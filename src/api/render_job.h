@@ -3,6 +3,7 @@
 // cameras render through them with the same settings.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,7 @@
 #include "render/lights.h"
 #include "render/material_eval.h"
 #include "render/renderer.h"
+#include "scene/camera_selection.h"
 #include "scene/render_scene.h"
 
 namespace lensrt {
@@ -33,6 +35,9 @@ struct FrameOptions {
   int maxDepth = 8;
   LightSampling lightSampling = LightSampling::Tree;  // --light-sampler
   bool quiet = false;                                 // no "no lights" warning
+  // A scene without a camera is framed for the chosen camera's field at an
+  // aspect ratio (width / height): see FramingField. None: 40 degrees.
+  std::function<FramingField(float aspect)> framingField;
 };
 
 // A scene file and its frame, as `lensrt render` and `lensrt compare` take them.

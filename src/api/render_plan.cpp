@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "api/camera_framing.h"
 #include "api/option_table.h"
 #include "api/raw_output.h"
 #include "api/render_request.h"
@@ -48,6 +49,7 @@ SceneOptions sceneOptions(const RenderSpec& spec, bool quiet) {
   o.maxDepth = spec.sampling.maxDepth;
   o.lightSampling = spec.sampling.lightSampling;
   o.quiet = quiet;
+  o.framingField = cameraFramingField(spec.camera);
   return o;
 }
 

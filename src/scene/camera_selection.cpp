@@ -10,7 +10,6 @@
 namespace lensrt {
 namespace {
 
-constexpr double kDefaultYfovDegrees = 40.0;
 constexpr double kElevationDegrees = 15.0;
 
 std::string available(const SceneDesc& desc) {
@@ -28,7 +27,7 @@ std::string available(const SceneDesc& desc) {
 
 }  // namespace
 
-CameraDesc frameBounds(const Bounds3f& bounds, float aspect) {
+CameraDesc frameBounds(const Bounds3f& bounds, float aspect, const FramingField& field) {
   Vec3d centre{0, 0, 0};
   double radius = 1;
   if (!bounds.empty()) {
@@ -36,11 +35,24 @@ CameraDesc frameBounds(const Bounds3f& bounds, float aspect) {
     radius = 0.5 * length(Vec3d(bounds.diagonal()));
     if (!(radius > 0)) radius = 1;
   }
-  const double yfov = kDefaultYfovDegrees * kPi / 180.0;
   const double a = aspect > 0 && std::isfinite(aspect) ? aspect : 1.0;
+  double yfov = kDefaultViewYfovDegrees * kPi / 180.0;
   const double halfV = yfov / 2;
-  const double halfH = std::atan(a * std::tan(halfV));
-  const double distance = radius / std::sin(std::min(halfV, halfH));
+  double distance = radius / std::sin(std::min(halfV, std::atan(a * std::tan(halfV))));
+  if (field) {
+    // The field narrows as the focus comes closer, and the focus follows the
+    // distance: a few rounds settle it (focused on the sphere's near side,
+    // the closest the scene's surfaces can be: the narrowest field).
+    double focusMetres = kInfinity;
+    for (int round = 0; round < 4; ++round) {
+      const double h = field(focusMetres);
+      if (!(h > 0 && h < kPi / 2)) break;
+      // The vertical field: the shorter side's, or the longer's at this aspect.
+      yfov = a >= 1 ? 2 * h : 2 * std::atan(std::tan(h) / a);
+      distance = radius / std::sin(h);
+      focusMetres = distance - radius;
+    }
+  }
   const double elevation = kElevationDegrees * kPi / 180.0;
   const Vec3d eye = centre + Vec3d(0, std::sin(elevation), std::cos(elevation)) * distance;
   CameraDesc cam;
@@ -52,9 +64,10 @@ CameraDesc frameBounds(const Bounds3f& bounds, float aspect) {
   return cam;
 }
 
-CameraDesc selectCamera(const SceneDesc& desc, const std::string& selector, float aspect) {
+CameraDesc selectCamera(const SceneDesc& desc, const std::string& selector, float aspect,
+                        const FramingField& field) {
   if (selector.empty())
-    return desc.cameras.empty() ? frameBounds(desc.worldBounds(), aspect) : desc.cameras[0];
+    return desc.cameras.empty() ? frameBounds(desc.worldBounds(), aspect, field) : desc.cameras[0];
   const bool digits =
       std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c); });
   if (digits) {
