@@ -108,6 +108,8 @@ AovSelection parseAovs(const std::vector<std::string>& names) {
   for (const std::string& n : names) {
     if (n == "depth")
       a.depth = true;
+    else if (n == "z")
+      a.z = true;
     else if (n == "normal")
       a.normal = true;
     else if (n == "albedo")
@@ -122,7 +124,7 @@ AovSelection parseAovs(const std::vector<std::string>& names) {
       a.objectId = true;
     else
       throw UsageError("--aov", "unknown AOV '" + n +
-                                    "' (choose from depth, normal, albedo, variance, crypto_object, "
+                                    "' (choose from depth, z, normal, albedo, variance, crypto_object, "
                                     "crypto_material, object_id)");
   }
   return a;

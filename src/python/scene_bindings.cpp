@@ -231,7 +231,7 @@ void bindScene(py::module_& m) {
               d[py::str(image.channels[c])] = channelView(self, int(c), 1);
             return d;
           },
-          "Every channel by its EXR name (R, G, B, A, depth.Z in metres, normal.X/Y/Z, albedo.R/G/B,\n"
+          "Every channel by its EXR name (R, G, B, A, depth.Z and Z in metres, normal.X/Y/Z, albedo.R/G/B,\n"
           "variance.R/G/B), each an H x W float32 array viewing the render (no copy).")
       .def_property_readonly(
           "metadata",

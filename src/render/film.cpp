@@ -9,6 +9,7 @@ namespace lensrt {
 std::vector<std::string> filmChannels(const AovSelection& aovs) {
   std::vector<std::string> c{"R", "G", "B", "A"};
   if (aovs.depth) c.push_back("depth.Z");
+  if (aovs.z) c.push_back("Z");
   if (aovs.normal) c.insert(c.end(), {"normal.X", "normal.Y", "normal.Z"});
   if (aovs.albedo) c.insert(c.end(), {"albedo.R", "albedo.G", "albedo.B"});
   if (aovs.variance) c.insert(c.end(), {"variance.R", "variance.G", "variance.B"});
@@ -41,6 +42,7 @@ void PixelAccumulator::add(const PathSample& s, float weight, bool lensReflected
   if (s.hit) {
     ++hits_;
     distance_ += s.distance;
+    planarZ_ += s.planarZ;
     if (isFinite(s.normal)) normal_ += s.normal;
     for (int k = 0; k < 3; ++k) albedo_[k] += s.albedo[k];
   }
@@ -80,6 +82,7 @@ void PixelAccumulator::write(const AovSelection& aovs, float* out) const {
              : reached_ > 0 ? float(double(hits_) / double(reached_))
                             : 0.0f;
   if (aovs.depth) out[c++] = hits_ > 0 ? float(distance_ / double(hits_)) : 0.0f;
+  if (aovs.z) out[c++] = hits_ > 0 ? float(planarZ_ / double(hits_)) : 0.0f;
   if (aovs.normal) {
     const float len = length(normal_);
     const Vec3f nn = len > 0 ? normal_ / len : Vec3f{0, 0, 0};
@@ -117,6 +120,7 @@ void PixelAccumulator::saveState(std::byte* out) const {
   put(out, covered_);
   put(out, dropped_);
   put(out, distance_);
+  put(out, planarZ_);
   for (double v : albedo_) put(out, v);
   put(out, normal_.x);
   put(out, normal_.y);
@@ -133,6 +137,7 @@ void PixelAccumulator::loadState(const std::byte* in) {
   get(in, covered_);
   get(in, dropped_);
   get(in, distance_);
+  get(in, planarZ_);
   for (double& v : albedo_) get(in, v);
   get(in, normal_.x);
   get(in, normal_.y);

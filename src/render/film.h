@@ -14,11 +14,14 @@
 namespace lensrt {
 
 struct AovSelection {
-  bool depth = false;
+  bool depth = false;  // depth.Z: from the camera node's origin to the first hit
   bool normal = false;
   bool albedo = false;
   bool variance = false;
   bool spp = false;
+  // Z: the first hit's depth along the camera's viewing axis (last of the
+  // flags, so aggregate initialisations of the others keep their meaning).
+  bool z = false;
   // ID AOVs (render/id_coverage.h), written after the others:
   bool cryptoObject = false;    // CryptoObject00.RGBA..02.RGBA: glTF node names
   bool cryptoMaterial = false;  // CryptoMaterial00.RGBA..02.RGBA: material names
@@ -53,7 +56,7 @@ class PixelAccumulator {
 
   // The running sums as bytes (native byte order), so a checkpoint can
   // continue them exactly: doubles stay doubles, nothing is rounded.
-  static constexpr std::size_t kStateBytes = 16 * 8 + 3 * 4;
+  static constexpr std::size_t kStateBytes = 17 * 8 + 3 * 4;
   void saveState(std::byte* out) const;
   void loadState(const std::byte* in);
 
@@ -68,6 +71,7 @@ class PixelAccumulator {
   std::uint64_t reached_ = 0, seen_ = 0, covered_ = 0;
   std::uint64_t dropped_ = 0;
   double distance_ = 0;
+  double planarZ_ = 0;
   Vec3f normal_{0, 0, 0};
   double albedo_[3] = {0, 0, 0};
 };

@@ -8,16 +8,17 @@
 namespace lensrt {
 namespace {
 
-// Version 2 keeps each pixel's coverage counts (alpha); version 1's sums
-// cannot give them.
-constexpr std::array<char, 8> kMagic{'L', 'R', 'T', 'S', 'U', 'M', 'S', '2'};
+// Version 3 keeps each pixel's planar depth (Z); version 2 added the
+// coverage counts (alpha). Older sums cannot give them.
+constexpr std::array<char, 8> kMagic{'L', 'R', 'T', 'S', 'U', 'M', 'S', '3'};
 constexpr std::array<char, 8> kMagicVersion1{'L', 'R', 'T', 'S', 'U', 'M', 'S', '1'};
+constexpr std::array<char, 8> kMagicVersion2{'L', 'R', 'T', 'S', 'U', 'M', 'S', '2'};
 // magic, x0 x1 y0 y1, samples done, AOV bits (int32 each), blocked rays (uint64).
 constexpr std::size_t kHeaderBytes = kMagic.size() + 6 * 4 + 8;
 
 std::int32_t aovBits(const AovSelection& a) {
   return (a.depth ? 1 : 0) | (a.normal ? 2 : 0) | (a.albedo ? 4 : 0) | (a.variance ? 8 : 0) |
-         (a.spp ? 16 : 0);
+         (a.spp ? 16 : 0) | (a.z ? 32 : 0);
 }
 
 }  // namespace
@@ -94,9 +95,10 @@ std::vector<std::byte> FilmState::toBytes() const {
 }
 
 FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
-  if (bytes.size() >= kMagic.size() && std::memcmp(bytes.data(), kMagicVersion1.data(), kMagic.size()) == 0)
-    throw std::invalid_argument(
-        "running sums of an older lensrt, without the counts its alpha needs: render it again");
+  for (const auto& older : {kMagicVersion1, kMagicVersion2})
+    if (bytes.size() >= kMagic.size() && std::memcmp(bytes.data(), older.data(), kMagic.size()) == 0)
+      throw std::invalid_argument(
+          "running sums of an older lensrt, without the sums this one keeps: render it again");
   if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic.data(), kMagic.size()) != 0)
     throw std::invalid_argument("not a lensrt running-sums file");
   const std::byte* p = bytes.data() + kMagic.size();
@@ -109,7 +111,7 @@ FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
   std::memcpy(&blocked, p, 8);
   p += 8;
   const PixelRegion region{v[0], v[1], v[2], v[3]};
-  if (region.empty() || region.x0 < 0 || region.y0 < 0 || v[4] < 0 || v[5] < 0 || v[5] > 31)
+  if (region.empty() || region.x0 < 0 || region.y0 < 0 || v[4] < 0 || v[5] < 0 || v[5] > 63)
     throw std::invalid_argument("the running-sums file's header is corrupt");
   AovSelection aovs;
   aovs.depth = v[5] & 1;
@@ -117,6 +119,7 @@ FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
   aovs.albedo = v[5] & 4;
   aovs.variance = v[5] & 8;
   aovs.spp = v[5] & 16;
+  aovs.z = v[5] & 32;
   const std::uint64_t expected = kHeaderBytes + region.pixelCount() * PixelAccumulator::kStateBytes;
   if (bytes.size() != expected)
     throw std::invalid_argument("the running-sums file has " + std::to_string(bytes.size()) +

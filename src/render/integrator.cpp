@@ -133,6 +133,7 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
     if (depth == 0) {
       out.hit = true;
       out.distance = hit->t;
+      out.position = hit->position;
       out.normal = sp.frame.n;
       out.albedo = sp.albedo;
       out.instance = hit->instance;

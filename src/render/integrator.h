@@ -29,11 +29,15 @@ struct IntegratorSettings {
 struct PathSample {
   Rgb radiance{0, 0, 0};  // in the film's RGB
   bool hit = false;
-  float distance = 0;     // along the unit camera ray, metres
-  Vec3f normal{0, 0, 0};  // world shading normal at the first hit, facing the camera
-  Rgb albedo{0, 0, 0};    // base colour at the first hit
-  int instance = -1;      // the first hit's SceneDesc instance (-1: no hit)
-  int material = -1;      // the first hit's material (-1: the default material)
+  // From the camera node's origin to the first hit (metres): the renderer
+  // sets it from `position`, whatever the lens (integrator: along the ray).
+  float distance = 0;
+  float planarZ = 0;        // the first hit's depth along the camera's viewing axis (renderer)
+  Vec3f position{0, 0, 0};  // the first hit, world space
+  Vec3f normal{0, 0, 0};    // world shading normal at the first hit, facing the camera
+  Rgb albedo{0, 0, 0};      // base colour at the first hit
+  int instance = -1;        // the first hit's SceneDesc instance (-1: no hit)
+  int material = -1;        // the first hit's material (-1: the default material)
 };
 
 class Integrator {

@@ -36,6 +36,11 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   // Spectral transport when the settings have a film response; a camera
   // that traces wavelengths (dispersion) follows each sample's hero.
   const FilmResponse* response = settings.filmResponse.get();
+  // The camera node's origin and viewing axis at rest: depth is measured
+  // from them (a lens's rays leave from its front glass, not from there).
+  Ray node{{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}};
+  node = camera.worldFromCamera()(node);
+  node.direction = normalize(node.direction);
   // A diffracting camera bends each ray by its wavelength, as a dispersive one traces it.
   const bool dispersive = camera.tracesWavelengths() || camera.diffracts();
   const std::optional<AdaptiveSampling>& adaptive = settings.adaptive;
@@ -132,6 +137,16 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             ++tileBlocked;
           } else {
             PathSample path = integrator.trace(cr->ray, samplers[k], lambdas[k], cr->lensReflected);
+            if (path.hit) {
+              Ray at = node;  // where the node is at the ray's time
+              if (settings.timing) {
+                at.time = cr->ray.time;
+                at = settings.timing->moveWithCamera(at);
+              }
+              const Vec3f toHit = path.position - at.origin;
+              path.distance = length(toHit);
+              path.planarZ = dot(toHit, normalize(at.direction));
+            }
             if (!dispersionWeights.empty()) path.radiance = path.radiance * dispersionWeights[k];
             acc.add(path, cr->weight, cr->lensReflected);
             if (ids && !cr->lensReflected) {

@@ -12,7 +12,9 @@ void addOutputRows(std::vector<Option>& table) {
   {
     Option o =
         row("--aov", "aov", "NAMES",
-            "extra EXR channels, comma separated: depth (depth.Z, metres), normal (normal.X/Y/Z, "
+            "extra EXR channels, comma separated: depth (depth.Z: metres from the camera node's origin to "
+            "what the pixel sees, along the ray), z (Z: metres along the camera's viewing axis), normal "
+            "(normal.X/Y/Z, "
             "world), albedo (albedo.R/G/B), variance (variance.R/G/B of the pixel mean), crypto_object and "
             "crypto_material (Cryptomatte layers CryptoObject00-02, CryptoMaterial00-02 of glTF node and "
             "material names), object_id (the most covered node index, -1 background), e.g. --aov "
@@ -29,6 +31,7 @@ void addOutputRows(std::vector<Option>& table) {
       }
       const AovSelection more = parseAovs(names);
       s.aovs.depth |= more.depth;
+      s.aovs.z |= more.z;
       s.aovs.normal |= more.normal;
       s.aovs.albedo |= more.albedo;
       s.aovs.variance |= more.variance;
@@ -39,7 +42,7 @@ void addOutputRows(std::vector<Option>& table) {
     o.show = [](const RenderSpec& s) {
       std::string names;
       for (const auto& [on, name] :
-           {std::pair{s.aovs.depth, "depth"}, std::pair{s.aovs.normal, "normal"},
+           {std::pair{s.aovs.depth, "depth"}, std::pair{s.aovs.z, "z"}, std::pair{s.aovs.normal, "normal"},
             std::pair{s.aovs.albedo, "albedo"}, std::pair{s.aovs.variance, "variance"},
             std::pair{s.aovs.cryptoObject, "crypto_object"},
             std::pair{s.aovs.cryptoMaterial, "crypto_material"}, std::pair{s.aovs.objectId, "object_id"}})
