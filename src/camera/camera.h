@@ -120,7 +120,6 @@ class Camera {
   // sample's wavelength (CameraSample::diffraction), so the renderer gives
   // each sample a wavelength, as for dispersion.
   bool diffracts() const { return diffraction_ != nullptr; }
-  const StopDiffraction* diffraction() const { return diffraction_.get(); }
 
   // Model name and parameters for EXR metadata and reports, e.g. "pinhole yfov=39.6deg".
   virtual std::string describe() const = 0;

@@ -35,9 +35,6 @@ class StopDiffraction {
   // gives: the table ends 16 cycles per radius out).
   std::optional<Vec3f> bend(const Vec3f& direction, const Vec2f& u, float wavelengthNm) const;
 
-  double pupilRadiusMm() const { return pupilRadiusMm_; }
-  const StopFarField& farField() const { return farField_; }
-
  private:
   StopFarField farField_;
   double pupilRadiusMm_ = 0.0;
