@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <cstddef>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -55,6 +56,7 @@ int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& fram
     frame.spec.time.seconds = frames[i].seconds;
     frame.spec.time.frame.reset();
     frame.output = frames[i].output;
+    frame.cameraJson = std::filesystem::path(frame.output).replace_extension(".camera.json").string();
     frame.loaded = i == 0 && firstScene ? firstScene : sequence.at(frames[i].seconds);
     if (const int status = renderToFile(frame, alone); status != 0) return status;
     // The other ranks render quietly (one progress bar), but say what they wrote.

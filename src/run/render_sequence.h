@@ -3,6 +3,8 @@
 // (api/scene_sequence.h); under MPI whole frames go to the ranks in turn,
 // each rendering its frames alone, so every frame is bit for bit the
 // render of one process (with --focus auto, one given the first frame's focus).
+// Beside each frame's image goes its camera (api/frame_camera.h):
+// out/f.0001.exr gets out/f.0001.camera.json.
 #pragma once
 
 #include <string>

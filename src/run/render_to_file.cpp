@@ -11,9 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "api/frame_camera.h"
 #include "api/option_table.h"
 #include "api/output_file.h"
 #include "api/render_plan.h"
+#include "api/text_file.h"
 #include "core/error.h"
 #include "image/image_io.h"
 #include "image/spp_channel.h"
@@ -185,6 +187,8 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
     else
       writeOutputImage(args.output, result.output.image, metadata, options);
     if (finished) plan.writeRaw(result.output.image);
+    if (finished && !args.cameraJson.empty())
+      writeTextFileAtomically(args.cameraJson, frameCameraJson(spec, camera, warnings).dump(2) + "\n");
   }
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",

@@ -11,10 +11,10 @@
 
 #include "api/render_job.h"
 #include "api/render_spec.h"
-#include "run/mpi_job.h"
 #include "image/preview_values.h"
 #include "render/pixel_region.h"
 #include "render/renderer.h"
+#include "run/mpi_job.h"
 
 namespace lensrt {
 
@@ -30,6 +30,9 @@ struct FileRender {
   std::string resume;            // a checkpoint to continue; empty: a new render
   bool quiet = false;            // no progress, warnings or summary on stderr
   std::string commandLine;       // lensrt:command_line
+  // A frame of --frames: where its camera's JSON goes (api/frame_camera.h),
+  // written once the image is; empty: none.
+  std::string cameraJson;
 };
 
 // Runs it; returns the exit status (0, or 128 + the signal that stopped it).
