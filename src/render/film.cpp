@@ -19,7 +19,9 @@ std::vector<std::string> filmChannels(const AovSelection& aovs) {
     if (on)
       for (const char* rank : {"00", "01", "02"})
         for (const char* k : {".R", ".G", ".B", ".A"}) c.push_back(std::string(layer) + rank + k);
-  if (aovs.objectId) c.push_back("object_id");
+  // One token before the dot, one after: the layout Blender's EXR reader
+  // takes as a pass (a bare "object_id" it drops), as its own IndexOB.X.
+  if (aovs.objectId) c.push_back("object_id.X");
   return c;
 }
 

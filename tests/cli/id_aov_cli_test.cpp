@@ -129,7 +129,7 @@ TEST(IdAovs, TheExrHasCryptomattesLayoutAndHeader) {
         EXPECT_GE(r.image.channelIndex(layer + rank + k), 0) << layer << rank << k;
     EXPECT_EQ(r.image.channelIndex(layer + "03.R"), -1);  // 6 ranks, the specification's default
   }
-  EXPECT_GE(r.image.channelIndex("object_id"), 0);
+  EXPECT_GE(r.image.channelIndex("object_id.X"), 0);
   for (const auto& [key, layer] : {std::pair{kObjectKey, "CryptoObject"}, {kMaterialKey, "CryptoMaterial"}}) {
     EXPECT_EQ(r.meta.count(key + "name") ? r.meta.at(key + "name") : "", layer);
     EXPECT_EQ(r.meta.count(key + "hash") ? r.meta.at(key + "hash") : "", "MurmurHash3_32");
@@ -164,7 +164,7 @@ TEST(IdAovs, AnObjectsMatteIsItsCoverageAndTheIdsSumToAlpha) {
   const Render r = render(renderArgs(writeScene(dir), out, 1024), out);
   ASSERT_EQ(r.run.status, 0);
   const Image& im = r.image;
-  const int alpha = im.channelIndex("A"), objectId = im.channelIndex("object_id");
+  const int alpha = im.channelIndex("A"), objectId = im.channelIndex("object_id.X");
   const double tol = 4.0 * std::sqrt(0.25 / 1024);
   double worst = 0;
   int edges = 0;

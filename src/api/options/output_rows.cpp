@@ -17,7 +17,7 @@ void addOutputRows(std::vector<Option>& table) {
             "(normal.X/Y/Z, "
             "world), albedo (albedo.R/G/B), variance (variance.R/G/B of the pixel mean), crypto_object and "
             "crypto_material (Cryptomatte layers CryptoObject00-02, CryptoMaterial00-02 of glTF node and "
-            "material names), object_id (the most covered node index, -1 background), e.g. --aov "
+            "material names), object_id (object_id.X: the most covered node index, -1 background), e.g. --aov "
             "depth,variance",
             "depth", PyValue::List);
     o.repeatable = true;
