@@ -9,6 +9,7 @@
 
 Lens, Scene, RenderResult and diff are the command line's `lens info`,
 `render` and `diff`, on the same library: the same seed gives the same bits.
+read opens what the command wrote (an EXR and its AOVs, a frame of --frames).
 """
 
 from collections import namedtuple as _namedtuple
@@ -26,6 +27,6 @@ Unprojection = _namedtuple("Unprojection", ["origins", "directions", "visible", 
 Unprojection.__doc__ = """Lens.unproject's result: the chief rays' origins (N x 3, metres) and unit
 directions (N x 3), world space, and visible and status as Projection's."""
 
-from ._lensrt import Lens, RenderResult, Scene, __version__, diff  # noqa: E402
+from ._lensrt import Lens, RenderResult, Scene, __version__, diff, read  # noqa: E402
 
-__all__ = ["Lens", "Scene", "RenderResult", "TraceResult", "Projection", "Unprojection", "diff", "__version__"]
+__all__ = ["Lens", "Scene", "RenderResult", "TraceResult", "Projection", "Unprojection", "diff", "read", "__version__"]

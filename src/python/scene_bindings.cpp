@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -25,6 +26,7 @@
 #include "api/scene_sequence.h"
 #include "core/error.h"
 #include "core/transform.h"
+#include "image/image_io.h"
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "python/keywords.h"
@@ -267,6 +269,22 @@ void bindScene(py::module_& m) {
                            r.result.image.height, r.result.samplesPerPixel, r.result.camera);
       });
 
+  m.def(
+      "read",
+      [](py::handle path) {
+        const std::string file = toPathText(path, "path");
+        auto out = std::make_unique<PyRenderResult>();
+        RenderResult& r = out->result;
+        r.image = readImage(file, &r.metadata);
+        if (const auto it = r.metadata.find("lensrt:spp"); it != r.metadata.end())
+          r.samplesPerPixel = std::atoi(it->second.c_str());
+        if (const auto it = r.metadata.find("lensrt:camera"); it != r.metadata.end()) r.camera = it->second;
+        return out;
+      },
+      arg("path"),
+      "Reads an image lensrt wrote (an EXR of `lensrt render`, a frame of --frames) as a RenderResult:\n"
+      "its channels by name (the AOVs' too) and its header (metadata). Raises FileNotFoundError or\n"
+      "ValueError naming the file.");
   m.def("_render_stub", &renderStub,
         "Scene.render's keyword lines of the stub, from the option table (tools/gen-reference).");
   py::class_<PyScene>(m, "Scene", R"doc(A glTF 2.0 scene (.gltf/.glb), loaded once and rendered many times.

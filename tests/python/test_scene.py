@@ -260,6 +260,25 @@ def test_write_goes_through_the_plugin_beside_the_module(dof, cli, tmp_path, nam
     assert lensrt.diff(out, tmp_path / name, fail=0)["overall"]["maxError"] == 0.0
 
 
+def test_read_gives_the_channels_and_header_the_command_wrote(dof, cli, tmp_path):
+    """lensrt.read: an EXR of `lensrt render` with AOVs, as a RenderResult whose channels hold
+    the bits of the same render made in Python, and whose metadata is the file's header."""
+    out = tmp_path / "aovs.exr"
+    cli("render", DOF, "--res", "40x24", "--spp", "2", "--seed", "5", "--aov", "depth,normal", "-q", "-o", out)
+    read = lensrt.read(out)
+    made = dof.render(res=(40, 24), spp=2, seed=5, aov=["depth", "normal"])
+    assert sorted(read.channels) == sorted(made.channels)
+    for name, values in made.channels.items():
+        assert np.array_equal(read.channels[name], values), name
+    assert read.metadata["lensrt:seed"] == "5" and read.spp == 2 and read.camera == made.camera
+    assert "worldToCamera" in read.metadata  # the standard attributes too, not only lensrt:*
+    with pytest.raises(FileNotFoundError, match="no such file"):
+        lensrt.read(tmp_path / "missing.exr")
+    (tmp_path / "junk.exr").write_text("not an image")
+    with pytest.raises(ValueError, match="junk.exr"):
+        lensrt.read(tmp_path / "junk.exr")
+
+
 def test_time_poses_the_animated_scene(tmp_path):
     """A black square that glTF animation moves from x = -2 to x = 2 over 2 s:
     seen from the front at time 0 it sits left of centre, at 2 s right of it,
