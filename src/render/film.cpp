@@ -20,6 +20,8 @@ std::vector<std::string> filmChannels(const AovSelection& aovs) {
       for (const char* rank : {"00", "01", "02"})
         for (const char* k : {".R", ".G", ".B", ".A"}) c.push_back(std::string(layer) + rank + k);
   if (aovs.objectId) c.push_back("object_id");
+  if (aovs.flow)
+    c.insert(c.end(), {"flow.forward.X", "flow.forward.Y", "flow.backward.X", "flow.backward.Y"});
   return c;
 }
 

@@ -11,10 +11,10 @@
 
 #include "api/render_job.h"
 #include "api/render_spec.h"
-#include "run/mpi_job.h"
 #include "image/preview_values.h"
 #include "render/pixel_region.h"
 #include "render/renderer.h"
+#include "run/mpi_job.h"
 
 namespace lensrt {
 
@@ -29,7 +29,10 @@ struct FileRender {
   double checkpointSeconds = 0;  // 0: no checkpoints
   std::string resume;            // a checkpoint to continue; empty: a new render
   bool quiet = false;            // no progress, warnings or summary on stderr
-  std::string commandLine;       // lensrt:command_line
+  // --flo on: also write --aov flow as Middlebury .flo files beside the
+  // output, <stem>.forward.flo and <stem>.backward.flo (image/flo_io.h).
+  bool flo = false;
+  std::string commandLine;  // lensrt:command_line
 };
 
 // Runs it; returns the exit status (0, or 128 + the signal that stopped it).
