@@ -28,7 +28,10 @@ std::shared_ptr<const MotionFlow> RenderJob::motionFlow(const Camera& camera,
       AnimationTime at = options.time;
       at.seconds = seconds;
       at.spanSeconds = 0;
-      auto posed = std::make_shared<SceneDesc>(loader.load(at));
+      // The geometry alone: an empty scene given as the previous one
+      // hands over no materials, so no texture is decoded again.
+      SceneDesc geometryOnly;
+      auto posed = std::make_shared<SceneDesc>(loader.load(at, &geometryOnly));
       Transform pose = opening;
       if (!frame_.worldFromCamera && gltfCamera_.node >= 0)
         for (const CameraDesc& c : posed->cameras)

@@ -39,7 +39,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
     throw UsageError("--frames", "give --frames A:B, or --time / --frame for one frame, not both");
   if (!job.resume.empty())
     throw UsageError("--frames", "--resume continues one frame's checkpoint: resume it alone with --frame N");
-  job.spec.time.flowStepSeconds = double(range.step) / job.spec.time.fps;  // --aov flow's neighbours
+  if (job.spec.aovs.flow && job.spec.time.flowStepSeconds == 0)  // --aov flow's neighbours
+    job.spec.time.flowStepSeconds = double(range.step) / job.spec.time.fps;
   std::vector<SequenceFrame> frames;  // the output's pattern checked before any work
   for (int f = range.first; f <= range.last; f += range.step)
     frames.push_back({double(f) / job.spec.time.fps, frameFileName(job.output, f)});

@@ -128,6 +128,20 @@ def test_frames_of_a_translating_plane_give_the_closed_form(cli, tmp_path, flags
     np.testing.assert_allclose(backward[..., 1], 0, atol=0.02)
 
 
+def test_python_flow_step_gives_the_frames_bits(cli, tmp_path):
+    # Scene.render(flow_step=...) at a frame's time is --frames' render of it.
+    scene = plane_scene(tmp_path / "plane.gltf")
+    cli("render", scene, "--res", f"{RES[0]}x{RES[1]}", "--spp", 2, "--frames", "3:3", "--flo", "on",
+        "--aov", "flow", "-q", "-o", tmp_path / "f.####.exr")
+    result = lensrt.Scene(scene, time=3 / FPS).render(res=RES, spp=2, aov="flow", flow_step=1 / FPS)
+    c = result.channels
+    for direction in ("forward", "backward"):
+        flo = read_flo(tmp_path / f"f.0003.{direction}.flo")
+        np.testing.assert_array_equal(c[f"flow.{direction}.X"], flo[..., 0])
+        np.testing.assert_array_equal(c[f"flow.{direction}.Y"], flo[..., 1])
+    np.testing.assert_allclose(c["flow.forward.X"], pinhole_focal_px() * SPEED / FPS / Z, atol=0.02)
+
+
 def test_a_moving_camera_moves_the_image_the_other_way(cli, tmp_path):
     scene = plane_scene(tmp_path / "pan.gltf", plane_speed=0.0, camera_speed=-0.6)
     cli("render", scene, "--res", f"{RES[0]}x{RES[1]}", "--spp", 1, "--frames", "2:4:2", "--flo", "on",
