@@ -40,10 +40,9 @@ std::shared_ptr<const MotionFlow> RenderJob::motionFlow(const Camera& camera,
       m.scene = std::move(posed);
       return m;
     };
-    flow->forwardFrom.cameraFromWorld = cameraFromWorld(opening);
-    flow->backwardFrom = flow->forwardFrom;
-    flow->forwardTo = neighbour(options.time.seconds + frameSeconds);
-    flow->backwardTo = neighbour(options.time.seconds - frameSeconds);
+    flow->now.cameraFromWorld = cameraFromWorld(opening);
+    flow->next = neighbour(options.time.seconds + frameSeconds);
+    flow->previous = neighbour(options.time.seconds - frameSeconds);
     return flow;
   }
   // A still frame: the motion over the shutter (its span: with a rolling
@@ -55,15 +54,11 @@ std::shared_ptr<const MotionFlow> RenderJob::motionFlow(const Camera& camera,
                                  "SECONDS on an animated scene, or --frame N / --frames A:B for the motion "
                                  "to the neighbouring frames)",
                                  scene_->options().file));
-  FlowMoment open, close;
-  open.cameraFromWorld = cameraFromWorld(opening);
-  close.spanEnd = true;
-  close.cameraFromWorld =
+  flow->overShutter = true;
+  flow->now.cameraFromWorld = cameraFromWorld(opening);
+  flow->next.spanEnd = true;
+  flow->next.cameraFromWorld =
       cameraFromWorld(timing->cameraSteps.empty() ? opening : timing->cameraSteps.back() * opening);
-  flow->forwardFrom = open;
-  flow->forwardTo = close;
-  flow->backwardFrom = close;
-  flow->backwardTo = open;
   return flow;
 }
 

@@ -39,22 +39,23 @@ std::optional<Vec2d> imageAt(const FlowMoment& m, const SceneDesc& rendered, con
   return q.raster;
 }
 
-std::optional<Vec2d> motion(const FlowMoment& from, const FlowMoment& to, const SceneDesc& rendered,
-                            const Camera& camera, int instance, std::uint32_t primitive,
-                            const Vec2f& barycentric) {
-  const std::optional<Vec2d> a = imageAt(from, rendered, camera, instance, primitive, barycentric);
-  if (!a) return std::nullopt;
-  const std::optional<Vec2d> b = imageAt(to, rendered, camera, instance, primitive, barycentric);
-  if (!b) return std::nullopt;
-  return *b - *a;
-}
-
 }  // namespace
 
 SampleFlow sampleFlow(const MotionFlow& flow, const SceneDesc& rendered, const Camera& camera, int instance,
                       std::uint32_t primitive, const Vec2f& barycentric) {
-  return {motion(flow.forwardFrom, flow.forwardTo, rendered, camera, instance, primitive, barycentric),
-          motion(flow.backwardFrom, flow.backwardTo, rendered, camera, instance, primitive, barycentric)};
+  const auto at = [&](const FlowMoment& m) {
+    return imageAt(m, rendered, camera, instance, primitive, barycentric);
+  };
+  const std::optional<Vec2d> now = at(flow.now);
+  if (!now) return {};
+  SampleFlow f;
+  if (const std::optional<Vec2d> next = at(flow.next)) f.forward = *next - *now;
+  if (flow.overShutter) {
+    if (f.forward) f.backward = *f.forward * -1.0;
+  } else if (const std::optional<Vec2d> previous = at(flow.previous)) {
+    f.backward = *previous - *now;
+  }
+  return f;
 }
 
 void FlowSums::add(const SampleFlow& f) {

@@ -26,10 +26,13 @@ struct FlowMoment {
   Transform cameraFromWorld;  // the camera's pose at that moment
 };
 
-// Forward: a point's image at `forwardTo` minus its image at `forwardFrom`;
-// backward likewise.
+// Forward: a point's image at `next` minus its image `now`. Backward: its
+// image at `previous` minus that `now`; over a still frame's shutter (`now`
+// its opening, `next` its closing) from the closing back to the opening,
+// minus forward. Each point is projected once per moment.
 struct MotionFlow {
-  FlowMoment forwardFrom, forwardTo, backwardFrom, backwardTo;
+  FlowMoment now, next, previous;
+  bool overShutter = false;  // backward is minus forward; `previous` unused
 };
 
 // The world position, in a scene at a moment, of the point of instance
