@@ -30,8 +30,15 @@ namespace {
 
 std::optional<Vec2d> imageAt(const FlowMoment& m, const SceneDesc& rendered, const Camera& camera,
                              int instance, std::uint32_t primitive, const Vec2f& barycentric) {
-  const std::optional<Vec3d> p =
-      surfacePointAt(m.scene ? *m.scene : rendered, m.spanEnd, instance, primitive, barycentric);
+  const SceneDesc& scene = m.scene ? *m.scene : rendered;
+  // Another pose of the file lists the same instances in the same order;
+  // one placed by another node is not this object.
+  if (m.scene &&
+      (instance < 0 || std::size_t(instance) >= scene.instances.size() ||
+       std::size_t(instance) >= rendered.instances.size() ||
+       scene.instances[std::size_t(instance)].node != rendered.instances[std::size_t(instance)].node))
+    return std::nullopt;
+  const std::optional<Vec3d> p = surfacePointAt(scene, m.spanEnd, instance, primitive, barycentric);
   if (!p) return std::nullopt;
   // The wavelength Lens.project takes by default (the d line).
   const ProjectedPoint q = camera.projectCameraPoint(m.cameraFromWorld.point(*p), kWavelengthDNm);

@@ -3,7 +3,7 @@
 // (scenes/propeller.gltf) the still checker wall behind it moves by exactly
 // 0 px while the blades move, forward and backward, over a frame and over
 // the shutter; and the flow's bits do not depend on the thread count or the
-// tile size.
+// tile size, and merged --tile parts are the whole render.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -80,6 +80,20 @@ TEST(FlowCli, TheStillWallStaysAndTheBladesMove) {
     EXPECT_LT(s.still, 576) << when[0];
     EXPECT_GT(s.largest, 0.5) << when[0];
   }
+}
+
+TEST(FlowCli, MergedTilesAreTheWholeRender) {
+  const TempDir dir;
+  const Image whole = renderFlow(dir, "whole.exr", {"--frame", "5"});
+  renderFlow(dir, "t0.exr", {"--frame", "5", "--tile", "0/2"});
+  renderFlow(dir, "t1.exr", {"--frame", "5", "--tile", "1/2"});
+  const RunResult m = runLensrt({"merge", "-q", "-o", (dir / "merged.exr").string(),
+                                 (dir / "t0.exr").string(), (dir / "t1.exr").string()});
+  ASSERT_EQ(m.status, 0) << m.err;
+  const Image merged = readImage(dir / "merged.exr");
+  ASSERT_EQ(merged.pixels.size(), whole.pixels.size());
+  EXPECT_EQ(merged.channels, whole.channels);
+  EXPECT_EQ(std::memcmp(merged.pixels.data(), whole.pixels.data(), whole.pixels.size() * sizeof(float)), 0);
 }
 
 TEST(FlowCli, TheBitsDoNotDependOnThreadsOrTiles) {
