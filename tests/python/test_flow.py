@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import lensrt
+from conftest import SCENES
 
 Z = 2.0  # metres from the camera to the plane
 SPEED = 1.2  # metres per second along +x
@@ -250,7 +251,7 @@ def test_the_anchors_conventions():
 
 
 def test_bad_input_gets_one_line(cli, tmp_path):
-    still = cli("render", lensrt_scene("cornell.gltf"), "--res", "8x6", "--spp", 1, "--aov", "flow",
+    still = cli("render", SCENES / "cornell.gltf", "--res", "8x6", "--spp", 1, "--aov", "flow",
                 "-o", tmp_path / "a.exr", check=False)
     assert still.returncode != 0
     assert still.stderr.count("\n") == 1 and "--aov: flow needs motion" in still.stderr
@@ -267,6 +268,17 @@ def test_bad_input_gets_one_line(cli, tmp_path):
     assert unknown.returncode != 0 and "unknown AOV 'flows'" in unknown.stderr
 
 
-def lensrt_scene(name):
-    from conftest import SCENES
-    return SCENES / name
+
+
+def test_flow_changes_no_other_channel():
+    # With the ID AOVs (whose channels come before flow's) and depth, each channel holds
+    # the same bits with and without flow.
+    scene = lensrt.Scene(SCENES / "propeller.gltf", time=0.2)
+    kwargs = dict(res=(32, 32), spp=2, shutter=0.002)
+    both = scene.render(aov=["depth", "crypto_object", "object_id", "flow"], **kwargs).channels
+    ids = scene.render(aov=["depth", "crypto_object", "object_id"], **kwargs).channels
+    flow = scene.render(aov="flow", **kwargs).channels
+    assert set(both) == set(ids) | set(flow)
+    for name, values in list(ids.items()) + list(flow.items()):
+        np.testing.assert_array_equal(both[name], values, err_msg=name)
+    assert np.abs(flow["flow.forward.X"]).max() > 0.5
