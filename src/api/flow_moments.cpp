@@ -49,11 +49,11 @@ std::shared_ptr<const MotionFlow> RenderJob::motionFlow(const Camera& camera,
   // shutter, to the last row's closing), forward from the opening to the
   // closing and backward from the closing to the opening.
   if (scene_->geometry().desc().motionSteps == 0 || !timing)
-    throw UsageError("--aov",
-                     fmt::format("flow needs motion: nothing in {} moves over the shutter (give --shutter "
-                                 "SECONDS on an animated scene, or --frame N / --frames A:B for the motion "
-                                 "to the neighbouring frames)",
-                                 scene_->options().file));
+    throw UsageError(
+        "--aov", fmt::format("flow needs motion: nothing in {} moves over the shutter (give --shutter "
+                             "SECONDS on an animated scene, or --flow-step SECONDS, --frame N or --frames "
+                             "A:B for the motion to the neighbouring frames)",
+                             scene_->options().file));
   flow->overShutter = true;
   flow->now.cameraFromWorld = cameraFromWorld(opening);
   flow->next.spanEnd = true;
