@@ -7,7 +7,10 @@ Vector pass as Cycles computes it, Kubric's conversion of it)."""
 import base64
 import json
 import math
+import pathlib
+import shutil
 import struct
+import subprocess
 import zlib
 
 import numpy as np
@@ -36,10 +39,10 @@ def png(rgb):
             + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
 
 
-def plane_scene(path, plane_speed=SPEED, camera_speed=0.0, size=6.0):
+def plane_scene(path, plane_speed=SPEED, camera_speed=0.0, size=6.0, plane_speed_y=0.0):
     """A size x size emissive plane (a smooth texture) Z metres down -z, moving along +x at
-    plane_speed, and a camera at the origin looking down -z, moving along +x at
-    camera_speed (LINEAR keyframes at 0 and 10 s)."""
+    plane_speed (and +y at plane_speed_y), and a camera at the origin looking down -z,
+    moving along +x at camera_speed (LINEAR keyframes at 0 and 10 s)."""
     u = np.linspace(0, 2 * math.pi, 256)
     pattern = 0.5 + 0.25 * np.sin(13 * u)[None, :] + 0.2 * np.cos(11 * u)[:, None]
     texture = (np.clip(np.dstack([pattern, pattern[::-1], pattern.T]), 0, 1) * 255).astype(np.uint8)
@@ -48,7 +51,7 @@ def plane_scene(path, plane_speed=SPEED, camera_speed=0.0, size=6.0):
     uvs = np.array([[0, 1], [1, 1], [1, 0], [0, 0]], np.float32)
     indices = np.array([0, 1, 2, 0, 2, 3], np.uint16)
     times = np.array([0, 10], np.float32)
-    plane_path = np.array([[0, 0, -Z], [10 * plane_speed, 0, -Z]], np.float32)
+    plane_path = np.array([[0, 0, -Z], [10 * plane_speed, 10 * plane_speed_y, -Z]], np.float32)
     camera_path = np.array([[0, 0, 0], [10 * camera_speed, 0, 0]], np.float32)
     blobs = [positions.tobytes(), uvs.tobytes(), indices.tobytes() + b"\0\0\0\0", times.tobytes(),
              plane_path.tobytes(), camera_path.tobytes()]
@@ -248,6 +251,62 @@ def test_the_anchors_conventions():
     # So Kubric's forward flow is (drow, dcol) of the motion to the next frame, and its
     # backward flow the motion from the previous frame to this one (minus ours).
     np.testing.assert_allclose(ours_forward, np.c_[forward[:, 1], forward[:, 0]])
+
+
+def read_exr(path):
+    """The channels of an uncompressed scanline OpenEXR file (float32 or half), per the
+    OpenEXR file layout: the header's attributes, the line offsets, then each line's
+    channels in the order of the channel list."""
+    raw = path.read_bytes()
+    assert raw[:4] == b"\x76\x2f\x31\x01"
+    pos, attrs = 8, {}
+    while raw[pos] != 0:
+        fields = []
+        for _ in range(2):
+            end = raw.index(b"\0", pos)
+            fields.append(raw[pos:end].decode())
+            pos = end + 1
+        size, = struct.unpack_from("<i", raw, pos)
+        attrs[fields[0]] = raw[pos + 4:pos + 4 + size]
+        pos += 4 + size
+    pos += 1
+    channels, chlist, p = [], attrs["channels"], 0
+    while chlist[p] != 0:
+        end = chlist.index(b"\0", p)
+        channels.append((chlist[p:end].decode(), struct.unpack_from("<i", chlist, end + 1)[0]))
+        p = end + 17
+    assert attrs["compression"][0] == 0, "uncompressed files only"
+    x0, y0, x1, y1 = struct.unpack("<4i", attrs["dataWindow"])
+    w, h = x1 - x0 + 1, y1 - y0 + 1
+    out = {name: np.zeros((h, w)) for name, _ in channels}
+    for offset in struct.unpack_from(f"<{h}Q", raw, pos):
+        y, _ = struct.unpack_from("<ii", raw, offset)
+        q = offset + 8
+        for name, kind in channels:
+            dtype, size = ("<f4", 4) if kind == 2 else ("<f2", 2)
+            out[name][y - y0] = np.frombuffer(raw, dtype, w, q)
+            q += size * w
+    return out
+
+
+@pytest.mark.skipif(shutil.which("blender") is None, reason="needs Blender (Debian's blender)")
+def test_blenders_vector_pass_is_the_stated_mapping(cli, tmp_path):
+    # Cycles renders the same plane moving right and up; its Vector pass equals
+    # blender_vector() of lensrt's flow (measured with Blender 3.4.1: (-2.35, -1.17,
+    # -2.35, -1.17) px for 2.35 px right and 1.17 px up per frame).
+    vy = SPEED / 2
+    scene = plane_scene(tmp_path / "plane.gltf", plane_speed_y=vy)
+    cli("render", scene, "--res", f"{RES[0]}x{RES[1]}", "--spp", 1, "--frames", "3:3", "--flo", "on",
+        "--aov", "flow", "-q", "-o", tmp_path / "f.####.exr", "--camera", "pinhole", "--shutter", 0)
+    script = pathlib.Path(__file__).with_name("blender_vector_pass.py")
+    done = subprocess.run(["blender", "-b", "--factory-startup", "-P", script, "--", tmp_path / "b.exr",
+                           *map(str, (*RES, YFOV, SPEED, vy, 3))], capture_output=True, text=True)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    exr = read_exr(tmp_path / "b.exr")
+    vector = np.stack([exr[f"ViewLayer.Vector.{c}"] for c in "XYZW"], -1)  # a uniform field
+    ours = blender_vector(read_flo(tmp_path / "f.0003.forward.flo"), read_flo(tmp_path / "f.0003.backward.flo"))
+    np.testing.assert_allclose(ours, vector, atol=0.02)
+    assert np.all(vector[..., 0] < -2) and np.all(vector[..., 3] < -1)  # right and up: all negative
 
 
 def test_bad_input_gets_one_line(cli, tmp_path):
