@@ -318,7 +318,8 @@ def test_bad_input_gets_one_line(cli, tmp_path):
     no_shutter = cli("render", plane, "--res", "8x6", "--spp", 1, "--aov", "flow", "--shutter", "0",
                      "-o", tmp_path / "b.exr", check=False)
     assert no_shutter.returncode != 0 and "flow needs motion" in no_shutter.stderr
-    for extra, flag in [(["--checkpoint", "60"], "--aov"), ([], "--flo")]:
+    for extra, flag in [(["--checkpoint", "60"], "--aov"), (["--resume", tmp_path / "c.exr"], "--aov"),
+                        ([], "--flo")]:
         args = ["--aov", "flow"] if flag == "--aov" else ["--flo", "on"]
         done = cli("render", plane, "--res", "8x6", "--spp", 1, *args, *extra, "-o", tmp_path / "c.exr",
                    check=False)
