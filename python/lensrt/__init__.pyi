@@ -222,6 +222,7 @@ class Scene:
         raw: _Path | None = None,
         cfa: str = "RGGB",
         crop: Sequence[str | int] | str | None = None,
+        flow_step: float = 0,
         camera_to_world: npt.ArrayLike | None = None,
         progress: Callable[[int, int], bool | None] | None = None,
         # END generated

@@ -82,6 +82,14 @@ class RenderJob {
   // nothing moves (a notice then when a rolling shutter or a shutter curve
   // was asked for).
   std::optional<ShutterTiming> shutterTiming(const ShutterSpec& shutter, Warnings& warnings) const;
+  // --aov flow's moments (render/motion_flow.h) for a camera made by this
+  // job: the scene posed `frameSeconds` before and after its time (read
+  // again from the file) when frameSeconds > 0, else the shutter's opening
+  // and closing under `timing`. UsageError("--aov") when nothing moves over
+  // the shutter (api/flow_moments.cpp).
+  std::shared_ptr<const MotionFlow> motionFlow(const Camera& camera,
+                                               const std::optional<ShutterTiming>& timing,
+                                               double frameSeconds) const;
   // The colour of the scene's most powerful light (--white-balance auto).
   std::optional<Rgb> dominantLightColour() const { return lights_->dominantColour(); }
 

@@ -122,10 +122,12 @@ AovSelection parseAovs(const std::vector<std::string>& names) {
       a.cryptoMaterial = true;
     else if (n == "object_id")
       a.objectId = true;
+    else if (n == "flow")
+      a.flow = true;
     else
       throw UsageError("--aov", "unknown AOV '" + n +
                                     "' (choose from depth, z, normal, albedo, variance, crypto_object, "
-                                    "crypto_material, object_id)");
+                                    "crypto_material, object_id, flow)");
   }
   return a;
 }

@@ -87,6 +87,8 @@ RenderPlan::RenderPlan(const RenderSpec& spec, Warnings& warnings, const PlanOpt
   // colour's and the shutter's notices.
   RenderJob::MadeCamera made = job_->makeCamera(spec_.camera, spec_.shutter, spec_.flare, warnings);
   base_.timing = job_->shutterTiming(spec_.shutter, warnings);
+  if (spec_.aovs.flow)
+    base_.flow = job_->motionFlow(*made.camera, base_.timing, spec_.time.flowFrameSeconds());
   colour_ = filmColour(spec_.colour, job_->dominantLightColour(), warnings);
   base_.filmResponse = colour_.response;
   readout_ = sensorReadout(spec_.sensor, exposure_, made.camera->film(), colour_.camera);

@@ -36,6 +36,12 @@ struct TimeSpec {
   double fps = 24.0;
   std::string animation;  // a name or a 0-based index; empty: every animation plays
   double atSeconds() const { return frame ? double(*frame) / fps : seconds.value_or(0.0); }
+  // --aov flow's neighbouring frames lie this many seconds before and after
+  // (--flow-step, else `--frames`' step); 0: one frame (1 / fps) with --frame.
+  double flowStepSeconds = 0.0;
+  // The seconds to the neighbouring frames flow compares; 0: a still frame
+  // (flow is the motion over its shutter).
+  double flowFrameSeconds() const { return flowStepSeconds > 0 ? flowStepSeconds : frame ? 1.0 / fps : 0.0; }
 };
 
 // The integrator and the samples.

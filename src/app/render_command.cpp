@@ -39,6 +39,8 @@ int runRender(const RenderArgs& args, const CommandContext& context) {
     throw UsageError("--frames", "give --frames A:B, or --time / --frame for one frame, not both");
   if (!job.resume.empty())
     throw UsageError("--frames", "--resume continues one frame's checkpoint: resume it alone with --frame N");
+  if (job.spec.aovs.flow && job.spec.time.flowStepSeconds == 0)  // --aov flow's neighbours
+    job.spec.time.flowStepSeconds = double(range.step) / job.spec.time.fps;
   std::vector<SequenceFrame> frames;  // the output's pattern checked before any work
   for (int f = range.first; f <= range.last; f += range.step)
     frames.push_back({double(f) / job.spec.time.fps, frameFileName(job.output, f)});
@@ -70,6 +72,10 @@ CommandAction addRenderCommand(CLI::App& app, const CommandContext& context) {
          "every SECONDS, write the image so far to -o (atomically) with its running sums in OUT.sums, "
          "so that --resume can continue it exactly, e.g. --checkpoint 600")
       ->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--flo", job.flo,
+                  "on: also write --aov flow as Middlebury/Sintel .flo files beside the output, "
+                  "OUT.forward.flo and OUT.backward.flo (OUT: -o without its extension), e.g. --flo on "
+                  "(default off)");
   cmd->add_option("--frames", args->frames,
                   "render frames A to B (every STEP-th) of the animation at --fps, each as --frame N would, "
                   "to the output's name with its # marks or %04d replaced by the frame number, e.g. --frames "

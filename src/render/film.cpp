@@ -22,6 +22,8 @@ std::vector<std::string> filmChannels(const AovSelection& aovs) {
   // One token before the dot, one after: the layout Blender's EXR reader
   // takes as a pass (a bare "object_id" it drops), as its own IndexOB.X.
   if (aovs.objectId) c.push_back("object_id.X");
+  if (aovs.flow)
+    c.insert(c.end(), {"flow.forward.X", "flow.forward.Y", "flow.backward.X", "flow.backward.Y"});
   return c;
 }
 

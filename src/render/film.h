@@ -26,6 +26,8 @@ struct AovSelection {
   bool cryptoObject = false;    // CryptoObject00.RGBA..02.RGBA: glTF node names
   bool cryptoMaterial = false;  // CryptoMaterial00.RGBA..02.RGBA: material names
   bool objectId = false;        // object_id: the most covered node index, -1 background
+  // flow.forward.X/Y, flow.backward.X/Y: image motion in pixels (render/motion_flow.h), last.
+  bool flow = false;
   bool ids() const { return cryptoObject || cryptoMaterial || objectId; }
 };
 

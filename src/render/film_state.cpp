@@ -27,6 +27,7 @@ FilmState::FilmState(const PixelRegion& region, const AovSelection& aovs)
     : region_(region), aovs_(aovs), pixels_(region.empty() ? 0 : region.pixelCount()) {
   if (region.empty()) throw std::invalid_argument("the region to render is empty");
   if (aovs.ids()) ids_.resize(pixels_.size());
+  if (aovs.flow) flow_.resize(pixels_.size());
 }
 
 std::uint64_t FilmState::droppedSamples() const {
@@ -52,8 +53,8 @@ Image FilmState::image(int frameWidth, int frameHeight) const {
   const std::size_t channels = out.channelCount();
   for (std::size_t i = 0; i < pixels_.size(); ++i) pixels_[i].write(aovs_, &out.pixels[i * channels]);
   if (aovs_.ids()) {
-    // The ID channels come last (filmChannels).
-    const std::size_t first = channels - (aovs_.cryptoObject ? 4 * 3 : 0) -
+    // The ID channels come last but for flow's (filmChannels).
+    const std::size_t first = channels - (aovs_.flow ? 4 : 0) - (aovs_.cryptoObject ? 4 * 3 : 0) -
                               (aovs_.cryptoMaterial ? 4 * 3 : 0) - (aovs_.objectId ? 1 : 0);
     for (std::size_t i = 0; i < pixels_.size(); ++i) {
       float* p = &out.pixels[i * channels + first];
@@ -68,10 +69,15 @@ Image FilmState::image(int frameWidth, int frameHeight) const {
       if (aovs_.objectId) *p = float(ids_[i].topNode());
     }
   }
+  if (aovs_.flow)
+    for (std::size_t i = 0; i < pixels_.size(); ++i) flow_[i].write(&out.pixels[(i + 1) * channels - 4]);
   return out;
 }
 
 std::vector<std::byte> FilmState::toBytes() const {
+  if (aovs_.flow)
+    throw std::invalid_argument(
+        "the flow AOV cannot be saved as running sums yet: render it without ranks or a checkpoint");
   if (aovs_.ids())
     throw std::invalid_argument(
         "the ID AOVs (crypto_object, crypto_material, object_id) cannot be saved "

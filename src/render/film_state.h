@@ -12,6 +12,7 @@
 #include "image/image.h"
 #include "render/film.h"
 #include "render/id_coverage.h"
+#include "render/motion_flow.h"
 #include "render/pixel_region.h"
 
 namespace lensrt {
@@ -34,6 +35,11 @@ class FilmState {
     return ids_[std::size_t(y - region_.y0) * std::size_t(region_.width()) + std::size_t(x - region_.x0)];
   }
 
+  // The pixel's flow sums; only when aovs().flow.
+  FlowSums& flow(int x, int y) {
+    return flow_[std::size_t(y - region_.y0) * std::size_t(region_.width()) + std::size_t(x - region_.x0)];
+  }
+
   std::uint64_t droppedSamples() const;
   // The camera samples of every pixel: region pixels x samplesDone(), or
   // fewer when adaptive sampling stopped pixels early.
@@ -47,8 +53,8 @@ class FilmState {
   // A self-describing byte image of the state (a header with the region,
   // AOVs and samples done, then every pixel's sums); fromBytes throws
   // std::invalid_argument with a one-line reason for anything malformed.
-  // toBytes throws std::invalid_argument with the ID AOVs (their counts are
-  // not saved yet).
+  // toBytes throws std::invalid_argument with the ID AOVs or flow (their
+  // sums are not saved yet).
   std::vector<std::byte> toBytes() const;
   static FilmState fromBytes(std::span<const std::byte> bytes);
 
@@ -58,6 +64,7 @@ class FilmState {
   int samplesDone_ = 0;
   std::vector<PixelAccumulator> pixels_;
   std::vector<IdCoverage> ids_;
+  std::vector<FlowSums> flow_;
 };
 
 }  // namespace lensrt

@@ -138,6 +138,8 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
       out.albedo = sp.albedo;
       out.instance = hit->instance;
       out.material = hit->material;
+      out.primitive = hit->primitive;
+      out.barycentric = hit->barycentric;
     }
     // A still emitter seen through a lens reflection is the flare light pass's.
     if (maxComponent(sp.emission) > 0 &&

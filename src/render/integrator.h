@@ -38,6 +38,10 @@ struct PathSample {
   Rgb albedo{0, 0, 0};      // base colour at the first hit
   int instance = -1;        // the first hit's SceneDesc instance (-1: no hit)
   int material = -1;        // the first hit's material (-1: the default material)
+  // The first hit's triangle and where on it (SurfaceHit's): the surface
+  // point that optical flow follows to other moments (render/motion_flow.h).
+  unsigned primitive = 0;
+  Vec2f barycentric{0, 0};
 };
 
 class Integrator {

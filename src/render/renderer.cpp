@@ -46,6 +46,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   const std::optional<AdaptiveSampling>& adaptive = settings.adaptive;
   const std::optional<SceneIds> ids =
       state.aovs().ids() ? std::optional<SceneIds>(integrator.scene().desc()) : std::nullopt;
+  const MotionFlow* flow = state.aovs().flow ? settings.flow.get() : nullptr;
+  if (state.aovs().flow && !flow) throw std::invalid_argument("the flow AOV needs the moments it compares");
 
   const auto renderTile = [&](int t) {
     const int x0 = region.x0 + (t % tilesX) * tile, y0 = region.y0 + (t / tilesX) * tile;
@@ -160,6 +162,12 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
               else
                 state.ids(columns[j / spp], y).add(0, -1, 0, -1);
             }
+            // Flow: of the samples that hit, as the depth's mean; a blocked or
+            // lens-reflected sample (flare) has no first hit of its own.
+            if (flow && path.hit && !cr->lensReflected)
+              state.flow(columns[j / spp], y)
+                  .add(sampleFlow(*flow, integrator.scene().desc(), camera, path.instance, path.primitive,
+                                  path.barycentric));
           }
         }
       }

@@ -19,6 +19,7 @@
 #include "render/film_response.h"
 #include "render/film_state.h"
 #include "render/integrator.h"
+#include "render/motion_flow.h"
 #include "render/pixel_region.h"
 #include "render/progress.h"
 #include "render/shutter_timing.h"
@@ -49,6 +50,8 @@ struct RenderSettings {
   // flare camera skip), the whole frame, added to the output's R, G and B
   // (renderOutput); none: nothing.
   std::shared_ptr<const FlareImage> flareLight;
+  // --aov flow: the moments the flow compares (required with aovs.flow).
+  std::shared_ptr<const MotionFlow> flow;
 };
 
 struct RenderOutput {

@@ -17,6 +17,7 @@
 #include "api/render_plan.h"
 #include "api/text_file.h"
 #include "core/error.h"
+#include "image/flo_io.h"
 #include "image/image_io.h"
 #include "image/spp_channel.h"
 #include "render/progress.h"
@@ -59,6 +60,17 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
                                           "across {} MPI ranks (their id counts are not sent): run one rank, "
                                           "or split the frame with --tile and lensrt merge",
                                           mpi.size()));
+  if (args.flo && !spec.aovs.flow) throw UsageError("--flo", "writes the flow AOV: add --aov flow");
+  // Nor are flow's sums (render/motion_flow.h).
+  if (spec.aovs.flow && (args.checkpointSeconds > 0 || !args.resume.empty()))
+    throw UsageError("--aov",
+                     "flow cannot be checkpointed or resumed (its sums are not in the running sums): drop "
+                     "--checkpoint/--resume");
+  if (spec.aovs.flow && shared)
+    throw UsageError("--aov",
+                     fmt::format("flow cannot be rendered across {} MPI ranks (its sums are not "
+                                 "sent): run one rank, or split the frame with --tile and lensrt merge",
+                                 mpi.size()));
   if (leader && !args.resume.empty() && !std::filesystem::exists(args.resume, ec))
     throw InputError(args.resume, "no such checkpoint");
   const std::string& envFile = spec.environment.file;
@@ -182,22 +194,30 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
       shown += args.display->view.empty() ? "(default view)" : args.display->view;
       metadata["lensrt:ocio_display_view"] = shown;
     }
-    if ((args.checkpointSeconds > 0 || !finished) && !spec.aovs.ids())
+    if ((args.checkpointSeconds > 0 || !finished) && !spec.aovs.ids() && !spec.aovs.flow)
       writeCheckpoint(args.output, state, result.output.image, metadata, options);
     else
       writeOutputImage(args.output, result.output.image, metadata, options);
     if (finished) plan.writeRaw(result.output.image);
     if (finished && !args.cameraJson.empty())
       writeTextFileAtomically(args.cameraJson, frameCameraJson(spec, camera, warnings).dump(2) + "\n");
+    if (finished && args.flo)
+      for (const char* direction : {"forward", "backward"}) {
+        std::filesystem::path flo = args.output;
+        flo.replace_extension(std::string(".") + direction + ".flo");
+        const std::string channel = std::string("flow.") + direction;
+        writeFlo(flo, result.output.image, channel + ".X", channel + ".Y");
+      }
   }
   if (result.output.droppedSamples > 0 && !args.quiet)
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
                spec.scene.file, result.output.droppedSamples);
   if (!finished) {
-    if (!args.quiet && spec.aovs.ids())
-      fmt::print(stderr,
-                 "lensrt: interrupted: wrote {} with {} of {} spp (not continuable: it has ID AOVs)\n",
-                 args.output, state.samplesDone(), settings.samplesPerPixel);
+    if (!args.quiet && (spec.aovs.ids() || spec.aovs.flow))
+      fmt::print(
+          stderr,
+          "lensrt: interrupted: wrote {} with {} of {} spp (not continuable: it has ID or flow AOVs)\n",
+          args.output, state.samplesDone(), settings.samplesPerPixel);
     else if (!args.quiet)
       fmt::print(stderr, "lensrt: interrupted: wrote {} with {} of {} spp (continue with --resume {})\n",
                  args.output, state.samplesDone(), settings.samplesPerPixel, args.output);

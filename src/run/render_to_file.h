@@ -29,7 +29,10 @@ struct FileRender {
   double checkpointSeconds = 0;  // 0: no checkpoints
   std::string resume;            // a checkpoint to continue; empty: a new render
   bool quiet = false;            // no progress, warnings or summary on stderr
-  std::string commandLine;       // lensrt:command_line
+  // --flo on: also write --aov flow as Middlebury .flo files beside the
+  // output, <stem>.forward.flo and <stem>.backward.flo (image/flo_io.h).
+  bool flo = false;
+  std::string commandLine;  // lensrt:command_line
   // A frame of --frames: where its camera's JSON goes (api/frame_camera.h),
   // written once the image is; empty: none.
   std::string cameraJson;

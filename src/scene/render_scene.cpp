@@ -527,6 +527,7 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   SurfaceHit hit;
   hit.t = t;
   hit.primitive = prim;
+  hit.barycentric = {u, v};
   hit.instance = rec.instance;
   hit.material = m.material;
   const auto world = [&](std::uint32_t i) {

@@ -37,6 +37,7 @@ struct SurfaceHit {
   int material = -1;          // index into SceneDesc::materials, -1: default material
   int instance = -1;          // index into SceneDesc::instances
   unsigned primitive = 0;     // triangle index within the instance's mesh
+  Vec2f barycentric;          // Embree's (u, v): the weights of the triangle's second and third corner
 };
 
 class RenderScene {

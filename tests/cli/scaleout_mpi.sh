@@ -3,7 +3,7 @@
 # is one ctest entry of a few seconds:
 #   models     2 ranks render the bits of one process for every camera model,
 #              and with --flare on for a lamp in frame
-#   failures   a bad scene, the ID AOVs (not sent), a rank without the scene or with another copy of
+#   failures   a bad scene, the ID AOVs and flow (not sent), a rank without the scene or with another copy of
 #              it, a rank killed mid-render: the job fails once, no output
 #   resume     checkpoints of a crop written and resumed under MPI (and
 #              across) are bit-identical to an uninterrupted render
@@ -147,6 +147,9 @@ failures)
   # The ID AOVs' counts are not sent between ranks: refused once, before rendering.
   status=0 && "${mpi[@]}" "$lensrt" "${job[@]}" --aov crypto_object 2>err || status=$?
   expect_failure 2 '^lensrt: error: --aov: .*across 2 MPI ranks' "ID AOVs under MPI" $status
+  # Nor are flow's sums.
+  status=0 && "${mpi[@]}" "$lensrt" "${job[@]}" --aov flow 2>err || status=$?
+  expect_failure 2 '^lensrt: error: --aov: flow .*across 2 MPI ranks' "flow under MPI" $status
 
   # Rank 1 cannot read the scene (its node does not have the file).
   status=0 && rank1_in empty "$lensrt" "${job[@]}" 2>err || status=$?

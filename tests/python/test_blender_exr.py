@@ -5,6 +5,7 @@ specification's formula gives from the file. (bpy.data.images.load reports any m
 EXR as 0 x 0, Blender's own included: the compositor is where its passes are read.)"""
 
 import json
+import pathlib
 import os
 import shutil
 import subprocess
@@ -16,8 +17,9 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import lensrt  # noqa: E402
-from conftest import ROOT, SCENES  # noqa: E402
+from conftest import SCENES  # noqa: E402
 
+HERE = pathlib.Path(__file__).parent
 BLENDER = shutil.which("blender")
 pytestmark = pytest.mark.skipif(BLENDER is None, reason="Blender is not installed (tools/setup installs it)")
 RES = (64, 48)
@@ -82,8 +84,8 @@ def test_blender_reads_rgba_as_combined_and_each_aov_as_a_pass(tmp_path):
     ch = result.channels
     mattes = ["CryptoObject:tall_block", "CryptoMaterial:red"]
     done = subprocess.run(
-        [BLENDER, "-b", "--factory-startup", "-noaudio", "--python", ROOT / "tools" / "blender_read_exr.py", "--",
-         exr, tmp_path, *mattes], capture_output=True, text=True, timeout=240,
+        [BLENDER, "-b", "--factory-startup", "-noaudio", "--python", HERE / "blender_read_exr.py", "--", exr, tmp_path,
+         *mattes], capture_output=True, text=True, timeout=240,
         env={**os.environ, "LENSRT_EXR_SIZE": f"{RES[0]}x{RES[1]}"})
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     assert "unknown channel token" not in done.stdout and "bad channel name" not in done.stdout, done.stdout

@@ -172,7 +172,7 @@ def test_render_help_lists_every_keyword_of_the_stub():
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
     render = next(n for n in scene.body if isinstance(n, ast.FunctionDef) and n.name == "render")
     keywords = [a.arg for a in render.args.kwonlyargs]
-    assert len(keywords) == 50  # the option table's render keywords, camera_to_world and progress
+    assert len(keywords) == 51  # the option table's render keywords, camera_to_world and progress
     doc = lensrt.Scene.render.__doc__
     for k in keywords:
         assert f"{k}=" in doc[doc.index("render(camera="):].split("->")[0], k  # in the signature line

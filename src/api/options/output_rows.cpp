@@ -17,7 +17,9 @@ void addOutputRows(std::vector<Option>& table) {
             "(normal.X/Y/Z, "
             "world), albedo (albedo.R/G/B), variance (variance.R/G/B of the pixel mean), crypto_object and "
             "crypto_material (Cryptomatte layers CryptoObject00-02, CryptoMaterial00-02 of glTF node and "
-            "material names), object_id (object_id.X: the most covered node index, -1 background), e.g. --aov "
+            "material names), object_id (object_id.X: the most covered node index, -1 background), flow "
+            "(flow.forward.X/Y, flow.backward.X/Y: the image motion to the next and previous frame of "
+            "--frame/--frames, or over a still frame's shutter, in pixels, x right, y down), e.g. --aov "
             "depth,variance",
             "depth", PyValue::List);
     o.repeatable = true;
@@ -38,6 +40,7 @@ void addOutputRows(std::vector<Option>& table) {
       s.aovs.cryptoObject |= more.cryptoObject;
       s.aovs.cryptoMaterial |= more.cryptoMaterial;
       s.aovs.objectId |= more.objectId;
+      s.aovs.flow |= more.flow;
     };
     o.show = [](const RenderSpec& s) {
       std::string names;
@@ -45,7 +48,8 @@ void addOutputRows(std::vector<Option>& table) {
            {std::pair{s.aovs.depth, "depth"}, std::pair{s.aovs.z, "z"}, std::pair{s.aovs.normal, "normal"},
             std::pair{s.aovs.albedo, "albedo"}, std::pair{s.aovs.variance, "variance"},
             std::pair{s.aovs.cryptoObject, "crypto_object"},
-            std::pair{s.aovs.cryptoMaterial, "crypto_material"}, std::pair{s.aovs.objectId, "object_id"}})
+            std::pair{s.aovs.cryptoMaterial, "crypto_material"}, std::pair{s.aovs.objectId, "object_id"},
+            std::pair{s.aovs.flow, "flow"}})
         if (on) {
           if (!names.empty()) names += ',';
           names += name;

@@ -82,6 +82,20 @@ void addSceneRows(std::vector<Option>& table) {
         [](auto& s) -> auto& { return s.time.animation; }));
     o.renderKeyword = false;
   }
+  {
+    Option o = row("--flow-step", "flow_step", "SECONDS",
+                   "--aov flow's neighbouring frames: the scene this many seconds after and before (the "
+                   "next and previous frame), e.g. --flow-step 0.04 (default: --frames' step, 1/fps with "
+                   "--frame, else the motion over the shutter)",
+                   "0.04", PyValue::Number);
+    o.set = [](RenderSpec& s, const std::string& text) {
+      s.time.flowStepSeconds = parseNumberIn("--flow-step", text, 1e-9, 1e9, "seconds");
+    };
+    o.show = [](const RenderSpec& s) { return numberText(s.time.flowStepSeconds); };
+    o.applies = [](const RenderSpec& s) { return s.aovs.flow; };
+    o.usedBy = "needs --aov flow";
+    add(std::move(o));
+  }
 }
 
 }  // namespace lensrt

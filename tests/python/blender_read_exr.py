@@ -1,4 +1,4 @@
-"""Run inside Blender (blender -b --factory-startup --python tools/blender_read_exr.py --
+"""Run inside Blender (blender -b --factory-startup --python tests/python/blender_read_exr.py --
 EXR OUTDIR [MATTE_LAYER:NAME ...]): reads a lensrt EXR as Blender's compositor does and
 writes what it finds, for tests/python/test_blender_exr.py to compare with the file:
   OUTDIR/passes.json       the Image node's passes (its enabled outputs, in order)

@@ -1,0 +1,64 @@
+// Optical flow (--aov flow): where the surface point a camera sample sees
+// first images at two moments, through the camera's own projection
+// (camera/projection.h), so the motion carries the lens's distortion.
+// Each sample adds its image's displacement; a pixel writes the mean over
+// its samples that hit. Design notes: docs/ground-truth.md ("Flow").
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "camera/camera.h"
+#include "core/transform.h"
+#include "core/vec.h"
+#include "scene/scene_desc.h"
+
+namespace lensrt {
+
+// The scene and the camera at one moment.
+struct FlowMoment {
+  // The scene posed at that moment; none: the rendered scene.
+  std::shared_ptr<const SceneDesc> scene;
+  // Where in that scene's motion: its last step (the end of the recorded
+  // span, the shutter's closing) rather than its first (the opening).
+  bool spanEnd = false;
+  Transform cameraFromWorld;  // the camera's pose at that moment
+};
+
+// Forward: a point's image at `next` minus its image `now`. Backward: its
+// image at `previous` minus that `now`; over a still frame's shutter (`now`
+// its opening, `next` its closing) from the closing back to the opening,
+// minus forward. Each point is projected once per moment.
+struct MotionFlow {
+  FlowMoment now, next, previous;
+  bool overShutter = false;  // backward is minus forward; `previous` unused
+};
+
+// The world position, in a scene at a moment, of the point of instance
+// `instance`'s triangle `primitive` at barycentrics (u, v) (Embree's: the
+// weights of its second and third vertex). None when that scene has no such
+// instance or triangle (the poses differ in what they contain).
+std::optional<Vec3d> surfacePointAt(const SceneDesc& scene, bool spanEnd, int instance,
+                                    std::uint32_t primitive, const Vec2f& barycentric);
+
+// One sample's forward and backward image motion in raster pixels (x right,
+// y down); a direction is none when the point has no image at one of its
+// moments (behind the camera, or no chief ray through the lens).
+struct SampleFlow {
+  std::optional<Vec2d> forward, backward;
+};
+SampleFlow sampleFlow(const MotionFlow& flow, const SceneDesc& rendered, const Camera& camera, int instance,
+                      std::uint32_t primitive, const Vec2f& barycentric);
+
+// A pixel's running flow sums: each direction's displacement summed over
+// the samples that have one, and their count.
+struct FlowSums {
+  double forward[2] = {0, 0}, backward[2] = {0, 0};
+  std::uint32_t forwardCount = 0, backwardCount = 0;
+  void add(const SampleFlow& f);
+  // flow.forward.X, .Y, flow.backward.X, .Y: the means, 0 without samples.
+  void write(float* out) const;
+};
+
+}  // namespace lensrt
