@@ -122,10 +122,16 @@ AovSelection parseAovs(const std::vector<std::string>& names) {
       a.cryptoMaterial = true;
     else if (n == "object_id")
       a.objectId = true;
+    else if (n == "position")
+      a.position = true;
+    else if (n == "uv")
+      a.uv = true;
+    else if (n == "object_coords")
+      a.objectCoords = true;
     else
       throw UsageError("--aov", "unknown AOV '" + n +
                                     "' (choose from depth, z, normal, albedo, variance, crypto_object, "
-                                    "crypto_material, object_id)");
+                                    "crypto_material, object_id, position, uv, object_coords)");
   }
   return a;
 }

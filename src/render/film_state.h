@@ -34,6 +34,11 @@ class FilmState {
     return ids_[std::size_t(y - region_.y0) * std::size_t(region_.width()) + std::size_t(x - region_.x0)];
   }
 
+  // The pixel's coordinate AOV sums; only when aovs().coords().
+  CoordinateSums& coords(int x, int y) {
+    return coords_[std::size_t(y - region_.y0) * std::size_t(region_.width()) + std::size_t(x - region_.x0)];
+  }
+
   std::uint64_t droppedSamples() const;
   // The camera samples of every pixel: region pixels x samplesDone(), or
   // fewer when adaptive sampling stopped pixels early.
@@ -58,6 +63,7 @@ class FilmState {
   int samplesDone_ = 0;
   std::vector<PixelAccumulator> pixels_;
   std::vector<IdCoverage> ids_;
+  std::vector<CoordinateSums> coords_;
 };
 
 }  // namespace lensrt
