@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "api/camera_models.h"
 #include "api/keyframes.h"
@@ -12,6 +14,7 @@
 #include "core/constants.h"
 #include "core/error.h"
 #include "optics/focus.h"
+#include "optics/glass.h"
 #include "optics/lens_readers.h"
 #include "optics/paraxial.h"
 
@@ -227,6 +230,48 @@ std::string matrixText(const Transform::Matrix& m) {
   return s;
 }
 
+// OpenEXR's worldToNDC (Imath's row-vector order, as worldToCamera): NDC
+// (0, 0) is the image's top left corner, (1, 1) its bottom right, and after
+// the divide by w (OpenEXR's camera z, the depth along the axis) x and y are
+// the paraxial (distortion-free) projection, z is 1 / depth. The projection's
+// centre and scale come from the camera's own projection of points near the
+// axis at the focus distance (10 m for the pinhole or at infinity), so the
+// matrix is the pinhole that matches the lens at the image's centre. None for
+// moved films (the projection ignores them) or a projection that fails.
+std::optional<std::string> worldToNdcText(const Camera& camera, const Transform::Matrix& cameraFromWorld) {
+  const CameraInfo i = camera.info();
+  const FilmGeometry& film = camera.film();
+  if (i.movements.any() || i.entrancePupilOffsetMm <= 0 || film.width <= 0 || film.height <= 0)
+    return std::nullopt;
+  const double depth = i.focusMetres > 0 && std::isfinite(i.focusMetres) ? i.focusMetres : 10.0;
+  constexpr double kTan = 1e-3;
+  const auto raster = [&](double tx, double ty) {
+    return camera.projectCameraPoint(Vec3d{tx * depth, ty * depth, -depth}, kWavelengthDNm).raster;
+  };
+  const Vec2d c = raster(0, 0);
+  const double fx = (raster(kTan, 0).x - raster(-kTan, 0).x) / (2 * kTan);
+  const double fy = (raster(0, -kTan).y - raster(0, kTan).y) / (2 * kTan);  // raster y runs down
+  if (!std::isfinite(c.x) || !std::isfinite(c.y) || !(fx > 0) || !(fy > 0)) return std::nullopt;
+  // NDC from OpenEXR camera space (x right, y up, z ahead), row vectors:
+  // (x fx / W + z cx / W, -y fy / H + z cy / H, 1, z).
+  double ndc[4][4] = {};
+  ndc[0][0] = fx / film.width;
+  ndc[2][0] = c.x / film.width;
+  ndc[1][1] = -fy / film.height;
+  ndc[2][1] = c.y / film.height;
+  ndc[3][2] = 1;
+  ndc[2][3] = 1;
+  std::string text;
+  for (int r = 0; r < 4; ++r)
+    for (int col = 0; col < 4; ++col) {
+      // worldToCamera in row-vector form is (S w)^T, S negating z (see below).
+      double v = 0;
+      for (int k = 0; k < 4; ++k) v += (k == 2 ? -1.0 : 1.0) * cameraFromWorld[k][r] * ndc[k][col];
+      text += fmt::format("{}{:.9g}", text.empty() ? "" : " ", v);
+    }
+  return text;
+}
+
 }  // namespace
 
 ImageMetadata standardCameraAttributes(const Camera& camera, const Exposure& exposure) {
@@ -259,6 +304,8 @@ ImageMetadata standardCameraAttributes(const Camera& camera, const Exposure& exp
     for (int r = 0; r < 4; ++r)
       text += fmt::format("{}{:.9g}", text.empty() ? "" : " ", (r == 2 ? -1.0 : 1.0) * w[r][c]);
   m["worldToCamera"] = text;
+  if (i.entrancePupilOffsetMm > 0) m["entrancePupilOffset"] = fmt::format("{:.6g}", i.entrancePupilOffsetMm);
+  if (const std::optional<std::string> ndc = worldToNdcText(camera, w)) m["worldToNDC"] = *ndc;
   // The film's RGB: linear Rec.709 primaries, D65 white (as sRGB).
   m["chromaticities"] = "0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0.329";
   return m;

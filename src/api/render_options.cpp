@@ -122,12 +122,18 @@ AovSelection parseAovs(const std::vector<std::string>& names) {
       a.cryptoMaterial = true;
     else if (n == "object_id")
       a.objectId = true;
+    else if (n == "position")
+      a.position = true;
+    else if (n == "uv")
+      a.uv = true;
+    else if (n == "object_coords")
+      a.objectCoords = true;
     else if (n == "flow")
       a.flow = true;
     else
       throw UsageError("--aov", "unknown AOV '" + n +
                                     "' (choose from depth, z, normal, albedo, variance, crypto_object, "
-                                    "crypto_material, object_id, flow)");
+                                    "crypto_material, object_id, position, uv, object_coords, flow)");
   }
   return a;
 }

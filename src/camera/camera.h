@@ -70,6 +70,10 @@ struct CameraInfo {
   // rays: only the ideal pinhole offers it, as pbrt, Cycles and Mitsuba do).
   std::string film = "irradiance";
   LensMovements movements = {};  // the film's shift and tilt (lens_movements.h); none by default
+  // Along the axis from the film to the entrance pupil (camera space's
+  // origin), mm, positive toward the scene (OpenEXR's entrancePupilOffset);
+  // 0: none (orthographic).
+  double entrancePupilOffsetMm = 0.0;
 };
 
 // A focus distance for describe(): "2m", "infinity".

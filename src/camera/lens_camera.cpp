@@ -111,6 +111,7 @@ CameraInfo LensCamera::info() const {
                dispersion_,
                params_.coatings ? coatingName(*params_.coatings) : std::string()};
   i.movements = params_.movements;
+  i.entrancePupilOffsetMm = filmZ_ - entrancePupilZ_;  // lens space: +z toward the film
   return i;
 }
 

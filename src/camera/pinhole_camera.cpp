@@ -54,6 +54,7 @@ CameraInfo PinholeCamera::info() const {
   i.exposure = onAxisWeight_ ? lensrt::describe(exposure_) : "none";
   i.film = onAxisWeight_ ? "irradiance" : "radiance";
   i.movements = movements_;
+  i.entrancePupilOffsetMm = i.focalLengthMm;  // the pinhole, its focal length from the film
   return i;
 }
 

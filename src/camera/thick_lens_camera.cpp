@@ -94,6 +94,7 @@ CameraInfo ThickLensCamera::info() const {
                lensrt::describe(exposure_),
                params_.dispersion.has_value()};
   i.movements = params_.movements;
+  i.entrancePupilOffsetMm = filmZ_ - params_.entrancePupilZ;  // lens space: +z toward the film
   return i;
 }
 

@@ -58,6 +58,7 @@ CameraInfo ThinLensCamera::info() const {
                lensrt::describe(exposure_),
                params_.dispersion.has_value()};
   i.movements = params_.movements;
+  i.entrancePupilOffsetMm = v_;  // the pupil is the lens
   return i;
 }
 

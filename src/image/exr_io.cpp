@@ -163,12 +163,12 @@ void collectMetadata(const Imf::Header& header, ImageMetadata& metadata) {
 // strings. They, and the multi-part file's structural ones, are left to the
 // header; every other key is written as a string.
 // OpenEXR's standard attributes that lensrt writes (ImfStandardAttributes.h),
-// kept in metadata as text: numbers, 16 for worldToCamera (Imath's row-vector
+// kept in metadata as text: numbers, 16 for worldToCamera and worldToNDC (Imath's row-vector
 // order), 8 for chromaticities (red, green, blue, white x y) and 2 for
 // sensorOverallDimensions (mm); lensModel is text. Written with their
 // standard types (OpenEXR 3.2's for the lens and sensor ones); text that does
 // not parse is left out.
-constexpr std::array<const char*, 11> kStandardKeys{"aperture",
+constexpr std::array<const char*, 13> kStandardKeys{"aperture",
                                                     "focus",
                                                     "expTime",
                                                     "isoSpeed",
@@ -178,7 +178,9 @@ constexpr std::array<const char*, 11> kStandardKeys{"aperture",
                                                     "effectiveFocalLength",
                                                     "sensorPhotositePitch",
                                                     "sensorOverallDimensions",
-                                                    "lensModel"};
+                                                    "lensModel",
+                                                    "entrancePupilOffset",
+                                                    "worldToNDC"};
 
 std::vector<float> numbersOf(const std::string& text) {
   std::vector<float> out;
@@ -197,12 +199,15 @@ void insertStandardAttribute(Imf::Header& header, const std::string& key, const 
   const std::vector<float> v = numbersOf(value);
   for (const float x : v)
     if (!std::isfinite(x)) return;
-  if (key == "worldToCamera") {
+  if (key == "worldToCamera" || key == "worldToNDC") {
     if (v.size() != 16) return;
     Imath::M44f m;
     for (int r = 0; r < 4; ++r)
       for (int c = 0; c < 4; ++c) m[r][c] = v[std::size_t(r * 4 + c)];
-    Imf::addWorldToCamera(header, m);
+    if (key == "worldToNDC")
+      Imf::addWorldToNDC(header, m);
+    else
+      Imf::addWorldToCamera(header, m);
   } else if (key == "chromaticities") {
     if (v.size() != 8) return;
     Imf::addChromaticities(header,

@@ -22,16 +22,19 @@ std::vector<std::string> filmChannels(const AovSelection& aovs) {
   // One token before the dot, one after: the layout Blender's EXR reader
   // takes as a pass (a bare "object_id" it drops), as its own IndexOB.X.
   if (aovs.objectId) c.push_back("object_id.X");
+  if (aovs.position) c.insert(c.end(), {"position.X", "position.Y", "position.Z"});
+  if (aovs.uv) c.insert(c.end(), {"uv.U", "uv.V"});
+  if (aovs.objectCoords) c.insert(c.end(), {"object_coords.X", "object_coords.Y", "object_coords.Z"});
   if (aovs.flow)
     c.insert(c.end(), {"flow.forward.X", "flow.forward.Y", "flow.backward.X", "flow.backward.Y"});
   return c;
 }
 
-void PixelAccumulator::add(const PathSample& s, float weight, bool lensReflected) {
+bool PixelAccumulator::add(const PathSample& s, float weight, bool lensReflected) {
   const Rgb l = s.radiance * weight;
   if (!isFinite(l)) {
     ++dropped_;
-    return;
+    return false;
   }
   ++count_;
   ++reached_;
@@ -50,6 +53,7 @@ void PixelAccumulator::add(const PathSample& s, float weight, bool lensReflected
     if (isFinite(s.normal)) normal_ += s.normal;
     for (int k = 0; k < 3; ++k) albedo_[k] += s.albedo[k];
   }
+  return true;
 }
 
 void PixelAccumulator::addBlocked() {
@@ -146,6 +150,44 @@ void PixelAccumulator::loadState(const std::byte* in) {
   get(in, normal_.x);
   get(in, normal_.y);
   get(in, normal_.z);
+}
+
+void CoordinateSums::add(const PathSample& s) {
+  if (!s.hit) return;
+  ++hits_;
+  for (int k = 0; k < 3; ++k) {
+    position_[k] += s.position[k];
+    object_[k] += s.objectPosition[k];
+  }
+  uv_[0] += s.uv.x;
+  uv_[1] += s.uv.y;
+}
+
+void CoordinateSums::write(const AovSelection& aovs, float* out) const {
+  // No hit: 0, as depth.Z (alpha says which pixels saw nothing).
+  const double n = double(hits_);
+  const auto mean = [n](double sum) { return n > 0 ? float(sum / n) : 0.0f; };
+  int c = 0;
+  if (aovs.position)
+    for (double v : position_) out[c++] = mean(v);
+  if (aovs.uv)
+    for (double v : uv_) out[c++] = mean(v);
+  if (aovs.objectCoords)
+    for (double v : object_) out[c++] = mean(v);
+}
+
+void CoordinateSums::saveState(std::byte* out) const {
+  put(out, hits_);
+  for (double v : position_) put(out, v);
+  for (double v : uv_) put(out, v);
+  for (double v : object_) put(out, v);
+}
+
+void CoordinateSums::loadState(const std::byte* in) {
+  get(in, hits_);
+  for (double& v : position_) get(in, v);
+  for (double& v : uv_) get(in, v);
+  for (double& v : object_) get(in, v);
 }
 
 }  // namespace lensrt

@@ -29,6 +29,13 @@ struct AovSelection {
   // flow.forward.X/Y, flow.backward.X/Y: image motion in pixels (render/motion_flow.h), last.
   bool flow = false;
   bool ids() const { return cryptoObject || cryptoMaterial || objectId; }
+  // Coordinate AOVs (CoordinateSums), written after the ID AOVs: the first
+  // hit's world point (position.X/Y/Z), TEXCOORD_0 (uv.U/V) and point in its
+  // mesh's own frame (object_coords.X/Y/Z), means over the samples that hit.
+  bool position = false;
+  bool uv = false;
+  bool objectCoords = false;
+  bool coords() const { return position || uv || objectCoords; }
 };
 
 // The Cryptomatte layers' names, as in the channels and the manifest.
@@ -41,7 +48,8 @@ class PixelAccumulator {
  public:
   // `weight` is the camera ray's weight; a blocked camera ray adds a zero
   // sample. `lensReflected`: the ray was reflected in the lens (flare).
-  void add(const PathSample& s, float weight, bool lensReflected = false);
+  // Returns false when the sample was dropped (radiance not finite).
+  bool add(const PathSample& s, float weight, bool lensReflected = false);
   void addBlocked();
   std::uint64_t droppedSamples() const { return dropped_; }
   // Every sample added, dropped ones included: the index of the next one.
@@ -76,6 +84,25 @@ class PixelAccumulator {
   double planarZ_ = 0;
   Vec3f normal_{0, 0, 0};
   double albedo_[3] = {0, 0, 0};
+};
+
+// A pixel's sums for the coordinate AOVs, kept apart from PixelAccumulator so
+// that renders without them keep no more per pixel. Counts the same samples
+// as depth.Z: those PixelAccumulator::add took that hit something.
+class CoordinateSums {
+ public:
+  void add(const PathSample& s);
+  // Writes the selected coordinate channels (filmChannels' order) to `out`.
+  void write(const AovSelection& aovs, float* out) const;
+  static constexpr std::size_t kStateBytes = 8 + 8 * 8;
+  void saveState(std::byte* out) const;
+  void loadState(const std::byte* in);
+
+ private:
+  std::uint64_t hits_ = 0;
+  double position_[3] = {0, 0, 0};
+  double uv_[2] = {0, 0};
+  double object_[3] = {0, 0, 0};
 };
 
 }  // namespace lensrt

@@ -13,12 +13,15 @@ namespace {
 constexpr std::array<char, 8> kMagic{'L', 'R', 'T', 'S', 'U', 'M', 'S', '3'};
 constexpr std::array<char, 8> kMagicVersion1{'L', 'R', 'T', 'S', 'U', 'M', 'S', '1'};
 constexpr std::array<char, 8> kMagicVersion2{'L', 'R', 'T', 'S', 'U', 'M', 'S', '2'};
-// magic, x0 x1 y0 y1, samples done, AOV bits (int32 each), blocked rays (uint64).
+// magic, x0 x1 y0 y1, samples done, AOV bits (int32 each), blocked rays (uint64);
+// then every pixel's sums, then (with a coordinate AOV) every pixel's
+// coordinate sums (bits 64-256, which older files never set).
 constexpr std::size_t kHeaderBytes = kMagic.size() + 6 * 4 + 8;
 
 std::int32_t aovBits(const AovSelection& a) {
   return (a.depth ? 1 : 0) | (a.normal ? 2 : 0) | (a.albedo ? 4 : 0) | (a.variance ? 8 : 0) |
-         (a.spp ? 16 : 0) | (a.z ? 32 : 0);
+         (a.spp ? 16 : 0) | (a.z ? 32 : 0) | (a.position ? 64 : 0) | (a.uv ? 128 : 0) |
+         (a.objectCoords ? 256 : 0);
 }
 
 }  // namespace
@@ -28,6 +31,7 @@ FilmState::FilmState(const PixelRegion& region, const AovSelection& aovs)
   if (region.empty()) throw std::invalid_argument("the region to render is empty");
   if (aovs.ids()) ids_.resize(pixels_.size());
   if (aovs.flow) flow_.resize(pixels_.size());
+  if (aovs.coords()) coords_.resize(pixels_.size());
 }
 
 std::uint64_t FilmState::droppedSamples() const {
@@ -52,9 +56,15 @@ Image FilmState::image(int frameWidth, int frameHeight) const {
   }
   const std::size_t channels = out.channelCount();
   for (std::size_t i = 0; i < pixels_.size(); ++i) pixels_[i].write(aovs_, &out.pixels[i * channels]);
+  // The ID channels, then the coordinate channels, then flow's, last (filmChannels).
+  const std::size_t flowChannels = aovs_.flow ? 4 : 0;
+  const std::size_t coordinates =
+      (aovs_.position ? 3 : 0) + (aovs_.uv ? 2 : 0) + (aovs_.objectCoords ? 3 : 0);
+  if (aovs_.coords())
+    for (std::size_t i = 0; i < pixels_.size(); ++i)
+      coords_[i].write(aovs_, &out.pixels[i * channels + channels - flowChannels - coordinates]);
   if (aovs_.ids()) {
-    // The ID channels come last but for flow's (filmChannels).
-    const std::size_t first = channels - (aovs_.flow ? 4 : 0) - (aovs_.cryptoObject ? 4 * 3 : 0) -
+    const std::size_t first = channels - flowChannels - coordinates - (aovs_.cryptoObject ? 4 * 3 : 0) -
                               (aovs_.cryptoMaterial ? 4 * 3 : 0) - (aovs_.objectId ? 1 : 0);
     for (std::size_t i = 0; i < pixels_.size(); ++i) {
       float* p = &out.pixels[i * channels + first];
@@ -82,7 +92,8 @@ std::vector<std::byte> FilmState::toBytes() const {
     throw std::invalid_argument(
         "the ID AOVs (crypto_object, crypto_material, object_id) cannot be saved "
         "as running sums yet: render them without ranks or a checkpoint");
-  std::vector<std::byte> bytes(kHeaderBytes + pixels_.size() * PixelAccumulator::kStateBytes);
+  std::vector<std::byte> bytes(kHeaderBytes + pixels_.size() * PixelAccumulator::kStateBytes +
+                               coords_.size() * CoordinateSums::kStateBytes);
   std::byte* p = bytes.data();
   std::memcpy(p, kMagic.data(), kMagic.size());
   p += kMagic.size();
@@ -96,6 +107,10 @@ std::vector<std::byte> FilmState::toBytes() const {
   for (const PixelAccumulator& px : pixels_) {
     px.saveState(p);
     p += PixelAccumulator::kStateBytes;
+  }
+  for (const CoordinateSums& c : coords_) {
+    c.saveState(p);
+    p += CoordinateSums::kStateBytes;
   }
   return bytes;
 }
@@ -117,7 +132,7 @@ FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
   std::memcpy(&blocked, p, 8);
   p += 8;
   const PixelRegion region{v[0], v[1], v[2], v[3]};
-  if (region.empty() || region.x0 < 0 || region.y0 < 0 || v[4] < 0 || v[5] < 0 || v[5] > 63)
+  if (region.empty() || region.x0 < 0 || region.y0 < 0 || v[4] < 0 || v[5] < 0 || v[5] > 511)
     throw std::invalid_argument("the running-sums file's header is corrupt");
   AovSelection aovs;
   aovs.depth = v[5] & 1;
@@ -126,7 +141,12 @@ FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
   aovs.variance = v[5] & 8;
   aovs.spp = v[5] & 16;
   aovs.z = v[5] & 32;
-  const std::uint64_t expected = kHeaderBytes + region.pixelCount() * PixelAccumulator::kStateBytes;
+  aovs.position = v[5] & 64;
+  aovs.uv = v[5] & 128;
+  aovs.objectCoords = v[5] & 256;
+  const std::uint64_t expected =
+      kHeaderBytes + region.pixelCount() *
+                         (PixelAccumulator::kStateBytes + (aovs.coords() ? CoordinateSums::kStateBytes : 0));
   if (bytes.size() != expected)
     throw std::invalid_argument("the running-sums file has " + std::to_string(bytes.size()) +
                                 " bytes, its header says " + std::to_string(expected));
@@ -136,6 +156,10 @@ FilmState FilmState::fromBytes(std::span<const std::byte> bytes) {
   for (PixelAccumulator& px : state.pixels_) {
     px.loadState(p);
     p += PixelAccumulator::kStateBytes;
+  }
+  for (CoordinateSums& c : state.coords_) {
+    c.loadState(p);
+    p += CoordinateSums::kStateBytes;
   }
   return state;
 }

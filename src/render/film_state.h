@@ -39,6 +39,10 @@ class FilmState {
   FlowSums& flow(int x, int y) {
     return flow_[std::size_t(y - region_.y0) * std::size_t(region_.width()) + std::size_t(x - region_.x0)];
   }
+  // The pixel's coordinate AOV sums; only when aovs().coords().
+  CoordinateSums& coords(int x, int y) {
+    return coords_[std::size_t(y - region_.y0) * std::size_t(region_.width()) + std::size_t(x - region_.x0)];
+  }
 
   std::uint64_t droppedSamples() const;
   // The camera samples of every pixel: region pixels x samplesDone(), or
@@ -65,6 +69,7 @@ class FilmState {
   std::vector<PixelAccumulator> pixels_;
   std::vector<IdCoverage> ids_;
   std::vector<FlowSums> flow_;
+  std::vector<CoordinateSums> coords_;
 };
 
 }  // namespace lensrt

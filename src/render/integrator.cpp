@@ -134,6 +134,8 @@ PathSample Integrator::trace(const Ray& cameraRay, const Sampler& sampler, Sampl
       out.hit = true;
       out.distance = hit->t;
       out.position = hit->position;
+      out.objectPosition = hit->objectPosition;
+      out.uv = hit->uv;
       out.normal = sp.frame.n;
       out.albedo = sp.albedo;
       out.instance = hit->instance;

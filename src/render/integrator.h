@@ -32,12 +32,14 @@ struct PathSample {
   // From the camera node's origin to the first hit (metres): the renderer
   // sets it from `position`, whatever the lens (integrator: along the ray).
   float distance = 0;
-  float planarZ = 0;        // the first hit's depth along the camera's viewing axis (renderer)
-  Vec3f position{0, 0, 0};  // the first hit, world space
-  Vec3f normal{0, 0, 0};    // world shading normal at the first hit, facing the camera
-  Rgb albedo{0, 0, 0};      // base colour at the first hit
-  int instance = -1;        // the first hit's SceneDesc instance (-1: no hit)
-  int material = -1;        // the first hit's material (-1: the default material)
+  float planarZ = 0;              // the first hit's depth along the camera's viewing axis (renderer)
+  Vec3f position{0, 0, 0};        // the first hit, world space
+  Vec3f objectPosition{0, 0, 0};  // the first hit in its mesh's coordinates (SurfaceHit)
+  Vec2f uv{0, 0};                 // the first hit's TEXCOORD_0, zero when the mesh has none
+  Vec3f normal{0, 0, 0};          // world shading normal at the first hit, facing the camera
+  Rgb albedo{0, 0, 0};            // base colour at the first hit
+  int instance = -1;              // the first hit's SceneDesc instance (-1: no hit)
+  int material = -1;              // the first hit's material (-1: the default material)
   // The first hit's triangle and where on it (SurfaceHit's): the surface
   // point that optical flow follows to other moments (render/motion_flow.h).
   unsigned primitive = 0;

@@ -150,7 +150,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
               path.planarZ = dot(toHit, normalize(at.direction));
             }
             if (!dispersionWeights.empty()) path.radiance = path.radiance * dispersionWeights[k];
-            acc.add(path, cr->weight, cr->lensReflected);
+            if (acc.add(path, cr->weight, cr->lensReflected) && state.aovs().coords())
+              state.coords(columns[j / spp], y).add(path);
             if (ids && !cr->lensReflected) {
               const std::size_t m = std::size_t(path.material + 1);
               const std::uint32_t materialBits =

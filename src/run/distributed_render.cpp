@@ -45,13 +45,13 @@ ImageMetadata unpackIdentity(const std::string& text) {
 }  // namespace
 
 std::optional<MpiJob::Failure> setUpTogether(MpiJob& mpi, const std::string& scene,
-                                              const ImageMetadata& identity) {
+                                             const ImageMetadata& identity) {
   if (auto failure = mpi.agree(std::nullopt)) return failure;
   const ImageMetadata main = unpackIdentity(mpi.shareFromMain(packIdentity(identity)));
   std::optional<MpiJob::Failure> mine;
   if (const std::string diff = renderIdentityDifference(identity, main); !diff.empty())
     mine = MpiJob::Failure{mpi.rank(), 1,
-                            fmt::format("{}: this rank's render differs from rank 0's: {}", scene, diff)};
+                           fmt::format("{}: this rank's render differs from rank 0's: {}", scene, diff)};
   return mpi.agree(mine);
 }
 
@@ -96,7 +96,10 @@ std::vector<PixelRegion> stripsOf(const PixelRegion& region, int rows) {
 FilmState extract(FilmState& state, const PixelRegion& strip) {
   FilmState part(strip, state.aovs());
   for (int y = strip.y0; y < strip.y1; ++y)
-    for (int x = strip.x0; x < strip.x1; ++x) part.pixel(x, y) = state.pixel(x, y);
+    for (int x = strip.x0; x < strip.x1; ++x) {
+      part.pixel(x, y) = state.pixel(x, y);
+      if (state.aovs().coords()) part.coords(x, y) = state.coords(x, y);
+    }
   part.setSamplesDone(state.samplesDone());
   return part;
 }
@@ -106,7 +109,10 @@ std::uint64_t insert(FilmState& state, FilmState& part) {
   const PixelRegion& strip = part.region();
   if (!state.region().contains(strip)) throw std::runtime_error("a rank sent back a strip outside the image");
   for (int y = strip.y0; y < strip.y1; ++y)
-    for (int x = strip.x0; x < strip.x1; ++x) state.pixel(x, y) = part.pixel(x, y);
+    for (int x = strip.x0; x < strip.x1; ++x) {
+      state.pixel(x, y) = part.pixel(x, y);
+      if (state.aovs().coords()) state.coords(x, y) = part.coords(x, y);
+    }
   return part.blockedCameraRays;
 }
 

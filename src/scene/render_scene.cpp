@@ -542,6 +542,7 @@ SurfaceHit RenderScene::Impl::hitAt(const GeometryRecord& rec, unsigned prim, fl
   };
   const Vec3f p0 = world(idx[0]), p1 = world(idx[1]), p2 = world(idx[2]);
   hit.position = p0 * w + p1 * u + p2 * v;
+  hit.objectPosition = interp3(m.positions);
   // glTF: counter-clockwise is the front unless the world transform mirrors.
   Vec3f ng = cross(p1 - p0, p2 - p0);
   if (rec.mirrored) ng = -ng;

@@ -32,12 +32,15 @@ struct SurfaceHit {
                               // geometricNormal
   Vec4f tangent{0, 0, 0, 0};  // world xyz unit + handedness w; zero when the mesh has none
   Vec2f uv;                   // TEXCOORD_0, zero when absent
-  Vec2f uv1;                  // TEXCOORD_1, zero when absent
-  Vec4f color{1, 1, 1, 1};    // COLOR_0 (linear RGBA), white when absent
-  int material = -1;          // index into SceneDesc::materials, -1: default material
-  int instance = -1;          // index into SceneDesc::instances
-  unsigned primitive = 0;     // triangle index within the instance's mesh
-  Vec2f barycentric;          // Embree's (u, v): the weights of the triangle's second and third corner
+  // The hit in the mesh's own coordinates (its POSITION values, the glTF
+  // node's frame), on the mesh at the shutter's opening.
+  Vec3f objectPosition;
+  Vec2f uv1;                // TEXCOORD_1, zero when absent
+  Vec4f color{1, 1, 1, 1};  // COLOR_0 (linear RGBA), white when absent
+  int material = -1;        // index into SceneDesc::materials, -1: default material
+  int instance = -1;        // index into SceneDesc::instances
+  unsigned primitive = 0;   // triangle index within the instance's mesh
+  Vec2f barycentric;        // Embree's (u, v): the weights of the triangle's second and third corner
 };
 
 class RenderScene {

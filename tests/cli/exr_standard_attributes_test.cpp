@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "cli/cli_util.h"
 
@@ -88,6 +90,62 @@ TEST(ExrStandardAttributes, NameTheLensAndTheSensor) {
   EXPECT_NEAR(sensor->value().x, 23.6f, 1e-4f);
   EXPECT_NEAR(sensor->value().y, 23.6f * 24 / 40, 1e-4f);
   EXPECT_NEAR(pitch->value(), 23.6f * 1000 / 40, 1e-3f);
+}
+
+// entrancePupilOffset (mm from the film to the entrance pupil) and worldToNDC
+// against the closed form. Through the thin lens (f 50 mm focused at 2 m
+// from it) the film stands v = f D / (D - f) = 51.282 mm behind the lens,
+// the pupil; through the pinhole (35 mm) at 35 mm. A camera-space point
+// (x, y, -z) then images at v x / z, v y / z on the 36 x 24 mm film, so
+// its NDC is (0.5 + v x / (36 z), 0.5 - v y / (24 z)) (top left (0, 0)).
+// dof_row's camera stands at (0, 1.2, 0) looking down -Z. OpenImageIO's
+// iinfo reads both as numbers.
+TEST(ExrStandardAttributes, EntrancePupilOffsetAndWorldToNdcMatchTheClosedForm) {
+  const TempDir dir;
+  struct Case {
+    std::vector<std::string> camera;
+    double filmToPupilMm;
+  };
+  const double f = 50, d = 2000;
+  for (const Case& c : {Case{{"--camera", "pinhole", "--focal-length", "35"}, 35.0},
+                        Case{{"--camera", "thin", "--focal-length", "50", "--fstop", "8", "--focus", "2"},
+                             f * d / (d - f)}}) {
+    SCOPED_TRACE(c.camera[1]);
+    const std::string out = (dir / "a.exr").string();
+    std::vector<std::string> args = {"render",   std::string(LENSRT_SOURCE_DIR) + "/scenes/dof_row.gltf",
+                                     "--sensor", "36x24",
+                                     "--res",    "48x32",
+                                     "--spp",    "1",
+                                     "-q",       "-o",
+                                     out};
+    args.insert(args.end(), c.camera.begin(), c.camera.end());
+    const cli::RunResult r = runLensrt(args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    Imf::InputFile file(out.c_str());
+    const Imf::Header& h = file.header();
+    const auto* pupil = h.findTypedAttribute<Imf::FloatAttribute>("entrancePupilOffset");
+    ASSERT_TRUE(pupil);
+    EXPECT_NEAR(pupil->value(), c.filmToPupilMm, 1e-3);
+    ASSERT_TRUE(Imf::hasWorldToNDC(h));
+    const Imath::M44f& m = Imf::worldToNDC(h);
+    const double v = c.filmToPupilMm;
+    for (const Imath::V3f world : {Imath::V3f(0.1f, 1.25f, -2.0f), Imath::V3f(-0.7f, 0.4f, -5.0f)}) {
+      const Imath::V3f ndc = world * m;  // Imath divides by w
+      const double x = world.x, y = world.y - 1.2, z = -world.z;
+      EXPECT_NEAR(ndc.x, 0.5 + v * x / (36 * z), 1e-5);
+      EXPECT_NEAR(ndc.y, 0.5 - v * y / (24 * z), 1e-5);
+    }
+    const cli::RunResult info = cli::runProgram("iinfo", {"-v", out});
+    ASSERT_EQ(info.status, 0) << info.err;
+    // The number iinfo prints after "key: " (NaN when it is not there).
+    const auto printed = [&](const std::string& key) {
+      const std::size_t at = info.out.find(key + ": ");
+      return at == std::string::npos ? std::nan("")
+                                     : std::strtod(info.out.c_str() + at + key.size() + 2, nullptr);
+    };
+    EXPECT_NEAR(printed("entrancePupilOffset"), v, 1e-3) << info.out;
+    EXPECT_NEAR(printed("worldToNDC"), v / 36, 1e-5) << info.out;
+  }
 }
 
 }  // namespace

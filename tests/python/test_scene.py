@@ -71,6 +71,25 @@ def test_arrays_view_the_render_without_copies(dof):
     assert np.isfinite(rgb).all() and rgb.mean() > 0
 
 
+def test_position_aov_holds_the_world_point_whatever_the_pose():
+    # flat_wall is the plane z = -2 m: every pixel that sees it reads world z
+    # -2 wherever the camera stands, and the centre pixel the point on its axis.
+    wall = lensrt.Scene(SCENES / "flat_wall.gltf")
+    pose = np.eye(4)
+    pose[:2, 3] = (0.3, -0.2)
+    pose[2, 3] = 1.0
+    channels = wall.render(res=(33, 33), spp=16, aov=("position", "uv", "object_coords"),
+                           camera_to_world=pose).channels
+    assert [c for c in channels if c[:2] in ("po", "uv", "ob")] == [
+        "position.X", "position.Y", "position.Z", "uv.U", "uv.V",
+        "object_coords.X", "object_coords.Y", "object_coords.Z"]
+    seen = channels["A"] > 0
+    assert seen.mean() > 0.9
+    assert np.abs(channels["position.Z"][seen] + 2.0).max() < 1e-5
+    assert channels["position.X"][16, 16] == pytest.approx(0.3, abs=1e-3)
+    assert channels["position.Y"][16, 16] == pytest.approx(-0.2, abs=1e-3)
+
+
 def test_camera_to_world_sets_the_pose():
     # flat_wall: an emitting wall in the plane z = -2 m; a camera at z = c
     # looking down -Z sees it at depth 2 + c on its axis.

@@ -31,6 +31,8 @@ struct Fixture {
     settings.samplesPerPixel = 7;
     settings.seed = 5;
     settings.aovs = {true, true, true, true};
+    // The coordinate AOVs' sums go with the others (resumes, strips).
+    settings.aovs.position = settings.aovs.uv = settings.aovs.objectCoords = true;
     settings.tileSize = 6;
   }
   Environment environment = Environment::constant({0.5f, 0.7f, 1.0f});

@@ -17,7 +17,9 @@ void addOutputRows(std::vector<Option>& table) {
             "(normal.X/Y/Z, "
             "world), albedo (albedo.R/G/B), variance (variance.R/G/B of the pixel mean), crypto_object and "
             "crypto_material (Cryptomatte layers CryptoObject00-02, CryptoMaterial00-02 of glTF node and "
-            "material names), object_id (object_id.X: the most covered node index, -1 background), flow "
+            "material names), object_id (object_id.X: the most covered node index, -1 background), position "
+            "(position.X/Y/Z: the world point seen, metres), uv (uv.U/V: its TEXCOORD_0), object_coords "
+            "(object_coords.X/Y/Z: the point in its mesh's own frame, metres), flow "
             "(flow.forward.X/Y, flow.backward.X/Y: the image motion to the next and previous frame of "
             "--frame/--frames, or over a still frame's shutter, in pixels, x right, y down), e.g. --aov "
             "depth,variance",
@@ -40,6 +42,9 @@ void addOutputRows(std::vector<Option>& table) {
       s.aovs.cryptoObject |= more.cryptoObject;
       s.aovs.cryptoMaterial |= more.cryptoMaterial;
       s.aovs.objectId |= more.objectId;
+      s.aovs.position |= more.position;
+      s.aovs.uv |= more.uv;
+      s.aovs.objectCoords |= more.objectCoords;
       s.aovs.flow |= more.flow;
     };
     o.show = [](const RenderSpec& s) {
@@ -49,7 +54,8 @@ void addOutputRows(std::vector<Option>& table) {
             std::pair{s.aovs.albedo, "albedo"}, std::pair{s.aovs.variance, "variance"},
             std::pair{s.aovs.cryptoObject, "crypto_object"},
             std::pair{s.aovs.cryptoMaterial, "crypto_material"}, std::pair{s.aovs.objectId, "object_id"},
-            std::pair{s.aovs.flow, "flow"}})
+            std::pair{s.aovs.position, "position"}, std::pair{s.aovs.uv, "uv"},
+            std::pair{s.aovs.objectCoords, "object_coords"}, std::pair{s.aovs.flow, "flow"}})
         if (on) {
           if (!names.empty()) names += ',';
           names += name;
