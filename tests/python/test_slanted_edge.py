@@ -31,7 +31,7 @@ cutoff (114 cycles/mm at 550 nm).
   at 74 cycles/mm. That gap is reported, not asserted. (lambda / 2: misses the
   product by 0.046; no diffraction: by 0.083.)
 
-About 6 s (two renders, 6.3 M and 3.1 M samples)."""
+About 5 s (two renders, 6.3 M and 3.1 M samples)."""
 
 import base64
 import json
