@@ -2,11 +2,13 @@
 # MPI end to end with Open MPI's mpirun (2 ranks on this machine); each MODE
 # is one ctest entry of a few seconds:
 #   models     2 ranks render the bits of one process for every camera model,
-#              and with --flare on for a lamp in frame
+#              the full lens with --diffraction on, and with --flare on for a
+#              lamp in frame
 #   failures   a bad scene, the ID AOVs and flow (not sent), a rank without the scene or with another copy of
 #              it, a rank killed mid-render: the job fails once, no output
 #   resume     checkpoints of a crop written and resumed under MPI (and
-#              across) are bit-identical to an uninterrupted render
+#              across, with --diffraction on too) are bit-identical to an
+#              uninterrupted render
 #   interrupt  SIGINT/SIGTERM to the ranks or to mpirun: a valid, resumable
 #              EXR with the samples done, bit-identical to a render of that spp
 #   compare    lensrt compare under MPI writes the EXRs of one process
@@ -56,7 +58,7 @@ models)
   # shellcheck disable=SC2054
   base=(render "$src/scenes/cornell.gltf" --res 24x17 --spp 3 --seed 11 -q --aov depth,normal,albedo,variance)
   for cam in "--camera pinhole" "--camera thin --fstop 2" "--camera thick --lens dgauss-50mm" \
-    "--camera lens --lens dgauss-50mm"; do
+    "--camera lens --lens dgauss-50mm" "--camera lens --lens dgauss-50mm --fstop 8 --blades 7 --diffraction on"; do
     # shellcheck disable=SC2086
     "$lensrt" "${base[@]}" $cam -o one.exr
     # shellcheck disable=SC2086
@@ -113,7 +115,7 @@ adaptive)
   base=(render "$src/scenes/cornell.gltf" --res 24x17 --spp 48 --min-spp 4 --noise-threshold 0.05 --seed 11 -q
     --aov variance)
   for cam in "--camera pinhole" "--camera thin --fstop 2" "--camera thick --lens dgauss-50mm" \
-    "--camera lens --lens dgauss-50mm"; do
+    "--camera lens --lens dgauss-50mm" "--camera lens --lens dgauss-50mm --fstop 8 --blades 7 --diffraction on"; do
     # shellcheck disable=SC2086
     "$lensrt" "${base[@]}" $cam -o one.exr
     # shellcheck disable=SC2086
@@ -198,6 +200,13 @@ resume)
   "$lensrt" "${base[@]}" --spp 2 --checkpoint 1000 -o b.exr
   "${mpi[@]}" "$lensrt" "${base[@]}" --spp 7 --resume b.exr -o b.exr
   same one.exr b.exr "a one-process checkpoint resumed under MPI"
+  # --diffraction on (a bend and a wavelength per sample): checkpointed under
+  # MPI, resumed in one process.
+  diffraction=("${base[@]}" --fstop 8 --blades 7 --diffraction on)
+  "$lensrt" "${diffraction[@]}" --spp 5 -o one.exr
+  "${mpi[@]}" "$lensrt" "${diffraction[@]}" --spp 2 --checkpoint 0.001 -o c.exr
+  "$lensrt" "${diffraction[@]}" --spp 5 --resume c.exr -o c.exr
+  same one.exr c.exr "--diffraction on: an MPI checkpoint resumed"
   ;;
 
 interrupt)

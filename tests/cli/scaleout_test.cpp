@@ -136,6 +136,33 @@ TEST(Scaleout, ResumeContinuesToTheBitsOfTheUninterruptedRender) {
   EXPECT_EQ(meta["lensrt:spp"], "7");
 }
 
+// --diffraction on draws each bend from a stream of its own and gives each
+// sample its own wavelength: tiles and resume still give the whole render's bits.
+TEST(Scaleout, DiffractionTilesAndResumeGiveTheBitsOfTheWholeRender) {
+  const TempDir dir;
+  const std::vector<std::string> lens{"--camera", "lens",          "--lens", "dgauss-50mm", "--fstop",
+                                      "8",        "--diffraction", "on",     "--blades",    "7"};
+  const auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), lens.begin(), lens.end());
+    return extra;
+  };
+  const std::string whole = (dir / "whole.exr").string(), ck = (dir / "ck.exr").string();
+  ASSERT_EQ(runLensrt(renderArgs(whole, with({}), 5)).status, 0);
+  std::vector<std::string> merge{"merge", "-q", "-o", (dir / "merged.exr").string()};
+  for (const std::string tile : {"0/2", "1/2"}) {
+    merge.push_back((dir / ("tile" + tile.substr(0, 1) + ".exr")).string());
+    const RunResult r = runLensrt(renderArgs(merge.back(), with({"--tile", tile}), 5));
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  const RunResult m = runLensrt(merge);
+  ASSERT_EQ(m.status, 0) << m.err;
+  expectSameBits(whole, merge[3]);
+  ASSERT_EQ(runLensrt(renderArgs(ck, with({"--checkpoint", "1000"}), 2)).status, 0);
+  const RunResult r = runLensrt(renderArgs(ck, with({"--resume", ck}), 5));
+  ASSERT_EQ(r.status, 0) << r.err;
+  expectSameBits(whole, ck);
+}
+
 TEST(Scaleout, ResumeRefusesAnotherRenderSayingWhatDiffers) {
   const TempDir dir;
   const std::string ck = (dir / "ck.exr").string(), out = (dir / "out.exr").string();
