@@ -82,6 +82,9 @@ class RenderJob {
   // nothing moves (a notice then when a rolling shutter or a shutter curve
   // was asked for).
   std::optional<ShutterTiming> shutterTiming(const ShutterSpec& shutter, Warnings& warnings) const;
+  // Whether the scene has glass whose index depends on the wavelength
+  // (KHR_materials_dispersion), which --spectral auto renders spectrally.
+  bool sceneDisperses() const;
   // The colour of the scene's most powerful light (--white-balance auto).
   std::optional<Rgb> dominantLightColour() const { return lights_->dominantColour(); }
 

@@ -6,6 +6,7 @@
 #include "api/option_table.h"
 #include "api/raw_output.h"
 #include "api/render_request.h"
+#include "camera/lens_camera.h"
 #include "core/error.h"
 #include "render/film.h"
 
@@ -30,6 +31,23 @@ PixelRegion partOfFrame(const RenderSpec& spec, int width, int height) {
     return crop;
   }
   return frame;
+}
+
+// What in this render depends on wavelengths (--spectral auto's rules read it).
+WavelengthNeeds wavelengthNeeds(const RenderSpec& spec, const RenderJob& job,
+                                const RenderJob::MadeCamera& made) {
+  const ColourSpec& c = spec.colour;
+  WavelengthNeeds n;
+  n.cameraResponse = !c.sensorResponse.empty() && c.sensorResponse != kCie1931Response;
+  n.colourSettings = c.whiteBalance.has_value() || c.outputSpace != ColorSpaceId::Srgb;
+  n.sceneDispersion = job.sceneDisperses();
+  // The full lens traces each sample at its wavelength for its dispersion or,
+  // under flare, for a single-layer coating's reflectance.
+  const auto* lens = dynamic_cast<const LensCamera*>(made.camera.get());
+  n.lensDispersion = lens && lens->disperses();
+  n.flareCoatings = made.camera->tracesWavelengths() && !n.lensDispersion;
+  n.diffraction = made.camera->diffracts();
+  return n;
 }
 
 }  // namespace
@@ -87,7 +105,12 @@ RenderPlan::RenderPlan(const RenderSpec& spec, Warnings& warnings, const PlanOpt
   // colour's and the shutter's notices.
   RenderJob::MadeCamera made = job_->makeCamera(spec_.camera, spec_.shutter, spec_.flare, warnings);
   base_.timing = job_->shutterTiming(spec_.shutter, warnings);
-  colour_ = filmColour(spec_.colour, job_->dominantLightColour(), warnings);
+  // The one place --spectral auto is resolved: the film below and every
+  // shot's metadata follow this choice.
+  transport_ = chooseTransport(spec_.colour.transport, wavelengthNeeds(spec_, *job_, made));
+  ColourSpec colour = spec_.colour;
+  colour.transport = transport_.spectral ? Transport::Spectral : Transport::Rgb;
+  colour_ = filmColour(colour, job_->dominantLightColour(), warnings);
   base_.filmResponse = colour_.response;
   readout_ = sensorReadout(spec_.sensor, exposure_, made.camera->film(), colour_.camera);
   shot_ = finishShot(std::move(made), spec_.camera);
@@ -119,6 +142,7 @@ ImageMetadata RenderPlan::finish(RenderJobResult& result, const PlannedShot& sho
       job_->metadata(*shot.camera, exposure_, shot.settings, result, commandLine, shot.identity);
   if (readout_) readOut(*readout_, result.output.image, m, shot.settings.seed, warnings);
   m["lensrt:spp_requested"] = std::to_string(shot.settings.samplesPerPixel);
+  m["lensrt:transport"] = transport_.description;
   return m;
 }
 
