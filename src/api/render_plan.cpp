@@ -6,7 +6,6 @@
 #include "api/option_table.h"
 #include "api/raw_output.h"
 #include "api/render_request.h"
-#include "camera/lens_camera.h"
 #include "core/error.h"
 #include "render/film.h"
 
@@ -41,10 +40,10 @@ WavelengthNeeds wavelengthNeeds(const RenderSpec& spec, const RenderJob& job,
   n.cameraResponse = !c.sensorResponse.empty() && c.sensorResponse != kCie1931Response;
   n.colourSettings = c.whiteBalance.has_value() || c.outputSpace != ColorSpaceId::Srgb;
   n.sceneDispersion = job.sceneDisperses();
-  // The full lens traces each sample at its wavelength for its dispersion or,
-  // under flare, for a single-layer coating's reflectance.
-  const auto* lens = dynamic_cast<const LensCamera*>(made.camera.get());
-  n.lensDispersion = lens && lens->disperses();
+  // A lens with dispersion data traced with --dispersion on: the full lens's
+  // lateral colour, the thin and thick lenses' axial colour. The full lens
+  // traces wavelengths under flare for a single-layer coating's reflectance too.
+  n.lensDispersion = made.camera->info().dispersion;
   n.flareCoatings = made.camera->tracesWavelengths() && !n.lensDispersion;
   n.diffraction = made.camera->diffracts();
   return n;

@@ -13,7 +13,7 @@ struct WavelengthNeeds {
   bool cameraResponse = false;   // --sensor-response other than cie1931 (with or without --noise)
   bool colourSettings = false;   // --white-balance, or --output-space other than srgb
   bool sceneDispersion = false;  // KHR_materials_dispersion glass (RenderJob::sceneDisperses)
-  bool lensDispersion = false;   // the full lens traced with dispersion (LensCamera::disperses)
+  bool lensDispersion = false;   // a lens traced with its dispersion (CameraInfo::dispersion)
   bool flareCoatings = false;    // the camera traces wavelengths for its coatings under flare
   bool diffraction = false;      // --diffraction on: the spikes' colour
 };

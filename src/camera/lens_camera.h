@@ -74,8 +74,6 @@ class LensCamera final : public Camera {
   bool tracesWavelengths() const override {
     return dispersion_ || (params_.flareReflections && params_.coatings == Coating::Single);
   }
-  // Each sample traced at its wavelength through a lens with dispersion data.
-  bool disperses() const { return dispersion_; }
   const LensSystem& lens() const { return *lens_; }
   const ExitPupilBounds& bounds() const { return *bounds_; }
   double fNumber() const { return fNumber_; }
