@@ -15,8 +15,13 @@ struct WhiteBalance {
   double kelvin = 0.0;  // for Kind::Kelvin
 };
 
+// How light travels (--spectral): at four wavelengths per sample, in RGB,
+// or auto: spectral where the image depends on wavelengths, RGB elsewhere
+// (the plan decides: api/transport_choice.h).
+enum class Transport { Spectral, Rgb, Auto };
+
 struct ColourSpec {
-  bool spectral = true;                      // four wavelengths per sample; false: RGB transport
+  Transport transport = Transport::Spectral;
   std::string sensorResponse;                // a response name or a .csv file; empty: cie1931
   std::optional<WhiteBalance> whiteBalance;  // none: the response's default
   // The image's RGB; none: the camera response's own RGB ("camera").

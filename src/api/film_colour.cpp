@@ -82,13 +82,14 @@ CameraRgb cameraRgb(const SensorResponse& sensor, const FilmResponse& film, doub
 }  // namespace
 
 void checkColourSpec(const ColourSpec& o) {
-  if (!o.spectral) return;
+  if (o.transport == Transport::Rgb) return;
   // An unknown name or a bad file fails before the scene loads.
   checkCameraSpace(o, loadSensorResponse(responseName(o)));
 }
 
 FilmColour filmColour(const ColourSpec& o, const std::optional<Rgb>& sceneLight, Warnings& warnings) {
-  if (!o.spectral) return {};
+  // Auto is resolved by the plan (api/transport_choice.h) before the film is built.
+  if (o.transport != Transport::Spectral) return {};
   const SensorResponse sensor = loadSensorResponse(responseName(o));  // read once here
   checkCameraSpace(o, sensor);
   // Cameras balance automatically by default, as a camera does; the CIE

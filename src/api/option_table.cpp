@@ -61,13 +61,13 @@ void checkSpec(const RenderSpec& s, unsigned command) {
                      "the pinhole has no aperture to diffract: it needs --camera thin, thick or lens");
   if (s.flare.barrelReflectance > 0.0 && !s.flare.on)
     throw UsageError("--barrel-reflectance", "the barrel's stray light needs --flare on");
-  if (!s.colour.spectral) {
+  if (s.colour.transport == Transport::Rgb) {
     if (!s.colour.sensorResponse.empty())
-      throw UsageError("--sensor-response", "needs spectral transport (--spectral on)");
+      throw UsageError("--sensor-response", "needs spectral transport (--spectral on or auto)");
     if (s.colour.whiteBalance)
-      throw UsageError("--white-balance", "needs spectral transport (--spectral on)");
+      throw UsageError("--white-balance", "needs spectral transport (--spectral on or auto)");
     if (s.colour.outputSpace != ColorSpaceId::Srgb)
-      throw UsageError("--output-space", "needs spectral transport (--spectral on)");
+      throw UsageError("--output-space", "needs spectral transport (--spectral on or auto)");
   }
   if (!s.sensor.noise && !s.sensor.params.empty())
     throw UsageError("--sensor-params", "describes the sensor's noise, which needs --noise on");

@@ -17,6 +17,7 @@
 #include "render/flare_light_pass.h"
 #include "render/id_coverage.h"
 #include "render/light_level.h"
+#include "render/material_eval.h"
 #include "render/progress.h"
 #include "render/render_identity.h"
 #include "scene/camera_selection.h"
@@ -163,6 +164,11 @@ RenderJob::RenderJob(std::shared_ptr<const Scene> scene, const FrameOptions& opt
 }
 
 RenderJob::~RenderJob() = default;
+
+bool RenderJob::sceneDisperses() const {
+  const std::vector<Material>& materials = scene_->geometry().desc().materials;
+  return std::any_of(materials.begin(), materials.end(), isDispersiveVolume);
+}
 
 std::string RenderJob::environmentDescription() const {
   return (defaultEnvironment_ ? "default " : "") + environment_->describe();

@@ -90,6 +90,9 @@ class RenderJob {
   std::shared_ptr<const MotionFlow> motionFlow(const Camera& camera,
                                                const std::optional<ShutterTiming>& timing,
                                                double frameSeconds) const;
+  // Whether the scene has glass whose index depends on the wavelength
+  // (KHR_materials_dispersion), which --spectral auto renders spectrally.
+  bool sceneDisperses() const;
   // The colour of the scene's most powerful light (--white-balance auto).
   std::optional<Rgb> dominantLightColour() const { return lights_->dominantColour(); }
 

@@ -32,6 +32,23 @@ PixelRegion partOfFrame(const RenderSpec& spec, int width, int height) {
   return frame;
 }
 
+// What in this render depends on wavelengths (--spectral auto's rules read it).
+WavelengthNeeds wavelengthNeeds(const RenderSpec& spec, const RenderJob& job,
+                                const RenderJob::MadeCamera& made) {
+  const ColourSpec& c = spec.colour;
+  WavelengthNeeds n;
+  n.cameraResponse = !c.sensorResponse.empty() && c.sensorResponse != kCie1931Response;
+  n.colourSettings = c.whiteBalance.has_value() || c.outputSpace != ColorSpaceId::Srgb;
+  n.sceneDispersion = job.sceneDisperses();
+  // A lens with dispersion data traced with --dispersion on: the full lens's
+  // lateral colour, the thin and thick lenses' axial colour. The full lens
+  // traces wavelengths under flare for a single-layer coating's reflectance too.
+  n.lensDispersion = made.camera->info().dispersion;
+  n.flareCoatings = made.camera->tracesWavelengths() && !n.lensDispersion;
+  n.diffraction = made.camera->diffracts();
+  return n;
+}
+
 }  // namespace
 
 SceneOptions sceneOptions(const RenderSpec& spec, bool quiet) {
@@ -89,7 +106,12 @@ RenderPlan::RenderPlan(const RenderSpec& spec, Warnings& warnings, const PlanOpt
   base_.timing = job_->shutterTiming(spec_.shutter, warnings);
   if (spec_.aovs.flow)
     base_.flow = job_->motionFlow(*made.camera, base_.timing, spec_.time.flowFrameSeconds());
-  colour_ = filmColour(spec_.colour, job_->dominantLightColour(), warnings);
+  // The one place --spectral auto is resolved: the film below and every
+  // shot's metadata follow this choice.
+  transport_ = chooseTransport(spec_.colour.transport, wavelengthNeeds(spec_, *job_, made));
+  ColourSpec colour = spec_.colour;
+  colour.transport = transport_.spectral ? Transport::Spectral : Transport::Rgb;
+  colour_ = filmColour(colour, job_->dominantLightColour(), warnings);
   base_.filmResponse = colour_.response;
   readout_ = sensorReadout(spec_.sensor, exposure_, made.camera->film(), colour_.camera);
   shot_ = finishShot(std::move(made), spec_.camera);
@@ -121,6 +143,7 @@ ImageMetadata RenderPlan::finish(RenderJobResult& result, const PlannedShot& sho
       job_->metadata(*shot.camera, exposure_, shot.settings, result, commandLine, shot.identity);
   if (readout_) readOut(*readout_, result.output.image, m, shot.settings.seed, warnings);
   m["lensrt:spp_requested"] = std::to_string(shot.settings.samplesPerPixel);
+  m["lensrt:transport"] = transport_.description;
   return m;
 }
 

@@ -17,6 +17,7 @@
 #include "api/render_job.h"
 #include "api/render_spec.h"
 #include "api/sensor_readout.h"
+#include "api/transport_choice.h"
 #include "core/warnings.h"
 #include "render/renderer.h"
 
@@ -61,6 +62,8 @@ class RenderPlan {
   const RenderSettings& settings() const { return shot_.settings; }
   const ImageMetadata& identity() const { return shot_.identity; }
   const FilmColour& colour() const { return colour_; }
+  // The transport used (--spectral auto resolved) and why.
+  const TransportChoice& transport() const { return transport_; }
   const std::optional<SensorReadout>& readout() const { return readout_; }
   const Exposure& exposure() const { return exposure_; }
 
@@ -81,6 +84,7 @@ class RenderPlan {
   RenderSpec spec_;
   PlanOptions options_;
   std::unique_ptr<RenderJob> job_;
+  TransportChoice transport_;
   FilmColour colour_;
   Exposure exposure_;
   RenderSettings base_;  // what every shot shares

@@ -186,6 +186,14 @@ def test_every_keyword_is_read(dof, tmp_path):
     assert "transport=spectral:cie1931,wb=5000K,output=acescg" in m["lensrt:settings"]
 
 
+def test_spectral_takes_auto(dof):
+    # The keyword takes "auto" as the flag does; the metadata says what it chose.
+    assert dof.render(res=(8, 6), spp=1, spectral="auto").metadata["lensrt:transport"] == \
+        "rgb (auto: nothing needs wavelengths)"
+    camera = dof.render(res=(8, 6), spp=1, spectral="auto", sensor_response="nikon-d850")
+    assert camera.metadata["lensrt:transport"] == "spectral (auto: a camera response)"
+
+
 def test_render_help_lists_every_keyword_of_the_stub():
     stub = ast.parse((pathlib.Path(lensrt.__file__).parent / "__init__.pyi").read_text())
     scene = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "Scene")
