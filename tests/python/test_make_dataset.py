@@ -42,5 +42,11 @@ def test_dataset_folders_hold_the_render_and_its_labels(tmp_path):
         camera = json.loads((folder / "camera.json").read_text())
         assert abs(camera["time_s"] - int(name[-4:]) / 240) < 1e-12
         assert camera["intrinsics"]["model"] == "opencv" and camera["intrinsics"]["width"] == 48
+        # Flow: the still wall reads 0; the blades turn about the hub, so the flow is across them.
+        forward = np.load(folder / "forward_flow.npy")
+        assert forward.shape == (36, 48, 2)
+        assert np.array_equal(forward[..., 0], c["flow.forward.X"]) and np.array_equal(forward[..., 1], c["flow.forward.Y"])
+        assert np.abs(forward[seg == 2]).max() == 0 and np.abs(forward[seg == 3]).max() > 0.5
+        assert (folder / "backward_flow.npy").exists()
         images.append(c["object_id.X"])
     assert not np.array_equal(images[0], images[1])  # the propeller turned between the frames
