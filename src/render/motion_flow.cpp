@@ -66,6 +66,7 @@ SampleFlow sampleFlow(const MotionFlow& flow, const SceneDesc& rendered, const C
 }
 
 void FlowSums::add(const SampleFlow& f) {
+  ++taken;
   if (f.forward) {
     forward[0] += f.forward->x;
     forward[1] += f.forward->y;

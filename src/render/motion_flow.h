@@ -51,11 +51,22 @@ struct SampleFlow {
 SampleFlow sampleFlow(const MotionFlow& flow, const SceneDesc& rendered, const Camera& camera, int instance,
                       std::uint32_t primitive, const Vec2f& barycentric);
 
+// The samples that hit whose motion a pixel's flow averages: its first
+// ones (in sample order, so the same whatever the threads, tiles or passes).
+// Each costs three projections, and through the full lens a projection is
+// a chief-ray solve (~1 us), more than a path of a simple scene: past a few
+// samples the flow of a pixel changes little (only where it mixes surfaces),
+// while its cost would grow with the spp.
+inline constexpr std::uint32_t kFlowSamplesPerPixel = 8;
+
 // A pixel's running flow sums: each direction's displacement summed over
 // the samples that have one, and their count.
 struct FlowSums {
   double forward[2] = {0, 0}, backward[2] = {0, 0};
   std::uint32_t forwardCount = 0, backwardCount = 0;
+  std::uint32_t taken = 0;  // samples added, with an image or not
+  // Whether the pixel has its kFlowSamplesPerPixel samples: later ones are not projected.
+  bool full() const { return taken >= kFlowSamplesPerPixel; }
   void add(const SampleFlow& f);
   // flow.forward.X, .Y, flow.backward.X, .Y: the means, 0 without samples.
   void write(float* out) const;

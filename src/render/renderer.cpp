@@ -163,12 +163,14 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
               else
                 state.ids(columns[j / spp], y).add(0, -1, 0, -1);
             }
-            // Flow: of the samples that hit, as the depth's mean; a blocked or
-            // lens-reflected sample (flare) has no first hit of its own.
-            if (flow && path.hit && !cr->lensReflected)
-              state.flow(columns[j / spp], y)
-                  .add(sampleFlow(*flow, integrator.scene().desc(), camera, path.instance, path.primitive,
-                                  path.barycentric));
+            // Flow: of the pixel's first samples that hit (kFlowSamplesPerPixel);
+            // a blocked or lens-reflected sample (flare) has no first hit of its own.
+            if (flow && path.hit && !cr->lensReflected) {
+              FlowSums& sums = state.flow(columns[j / spp], y);
+              if (!sums.full())
+                sums.add(sampleFlow(*flow, integrator.scene().desc(), camera, path.instance, path.primitive,
+                                    path.barycentric));
+            }
           }
         }
       }

@@ -342,3 +342,18 @@ def test_flow_changes_no_other_channel():
     for name, values in list(ids.items()) + list(flow.items()):
         np.testing.assert_array_equal(both[name], values, err_msg=name)
     assert np.abs(flow["flow.forward.X"]).max() > 0.5
+
+
+def test_a_pixel_averages_its_first_samples_that_hit():
+    """The flow of a pixel is the mean over its first kFlowSamplesPerPixel (8) samples that
+    hit: 8 and 32 spp give the same bits where the propeller's blades (whose samples in a
+    pixel move differently: a rotation) cover pixels, where every sample hits the blades or
+    the wall. Without the limit, 32 spp averages 32 samples and the edges differ."""
+    scene = lensrt.Scene(SCENES / "propeller.gltf", time=0.2)
+    kwargs = dict(res=(32, 32), shutter=0.002, seed=4, aov="flow")
+    eight = scene.render(spp=8, **kwargs).channels
+    more = scene.render(spp=32, **kwargs).channels
+    assert (eight["A"] == 1).all()  # the wall is behind everything: every sample hits
+    for name in ("flow.forward.X", "flow.forward.Y", "flow.backward.X", "flow.backward.Y"):
+        np.testing.assert_array_equal(eight[name], more[name], err_msg=name)
+    assert np.abs(more["flow.forward.X"]).max() > 0.5
