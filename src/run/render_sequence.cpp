@@ -42,7 +42,7 @@ int renderSequence(const FileRender& job, const std::vector<SequenceFrame>& fram
     first.time.frame.reset();
     firstScene = sequence.at(frames.front().seconds);
     const RenderPlan plan(first, warnings,
-                          PlanOptions{.scene = firstScene, .quiet = true, .lightPass = false});
+                          PlanOptions{.scene = firstScene, .repose = {}, .quiet = true, .lightPass = false});
     if (const double focus = plan.camera().info().focusMetres; focus > 0) {
       held.spec.camera.focusMetres = focus;
       held.spec.camera.focusPixel.reset();  // it chose the distance; a fixed focus takes none
