@@ -3,6 +3,7 @@
 // model is deterministic and knows nothing about threads or tiles.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -37,6 +38,9 @@ struct CameraSample {
   Vec2f lens;                     // uniform in [0,1)^2: aperture / exit-pupil sample
   float wavelengthNm = 550.f;     // nm: the wavelength a dispersive camera traces this sample at
   Vec2f diffraction{0.5f, 0.5f};  // uniform in [0,1)^2: the far-field bend (--diffraction on only)
+  // Spectral transport through a camera that carriesLanes(): the other three
+  // wavelengths (nm) the path carries past the lens; 0: none asked.
+  std::array<float, 3> secondaryNm{};
 };
 
 struct CameraRay {
@@ -46,6 +50,11 @@ struct CameraRay {
   // on its way out; the flare light pass takes such paths of the sources it
   // handles, so the integrator skips those (render/flare_light_pass.h).
   bool lensReflected = false;
+  // Asked for with CameraSample::secondaryNm: each wavelength's factor on
+  // `weight` (the hero's first), from multiple importance sampling over the
+  // four wavelengths as hero (camera/wavelength_lanes.h); 0 for a wavelength
+  // whose trace of the same outgoing ray misses the sample's pixel.
+  std::optional<std::array<float, 4>> laneWeights = std::nullopt;
 };
 
 // Radiometry shared by the models (see exposure.h for the exposure modes):
@@ -120,6 +129,10 @@ class Camera {
   // True when rays depend on CameraSample::wavelengthNm (dispersion): the
   // renderer then weights each sample's RGB by its wavelength's response.
   virtual bool tracesWavelengths() const { return false; }
+  // True when the camera, tracing wavelengths, can weigh the secondary
+  // wavelengths of a spectral sample (CameraSample::secondaryNm), so that a
+  // path carries all four past the lens instead of its hero alone.
+  virtual bool carriesLanes() const { return false; }
   // --diffraction on: every ray is bent by the stop's far field at its
   // sample's wavelength (CameraSample::diffraction), so the renderer gives
   // each sample a wavelength, as for dispersion.

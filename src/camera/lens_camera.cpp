@@ -167,23 +167,22 @@ Vec3d LensCamera::filmPointMm(const Vec2f& raster) const {
   return {-up.x, -up.y, filmZ_};  // the inverted real image
 }
 
-Vec2d LensCamera::rasterOfFilmHit(const LensRay& t) const {
+Vec3d LensCamera::filmHitMm(const LensRay& t) const {
   if (!params_.movements.any()) {
     const double s = (filmZ_ - t.origin.z) / t.direction.z;
-    const Vec2d upright{-(t.origin.x + s * t.direction.x), -(t.origin.y + s * t.direction.y)};
-    return rasterOfUprightSensorPointMm(film(), upright);
+    return {t.origin.x + s * t.direction.x, t.origin.y + s * t.direction.y, filmZ_};
   }
   // The moved film's plane through (0, 0, filmZ) with its normal.
   const Vec3d& n = movedFilm_.normal();
   const Vec3d toPivot = Vec3d{0.0, 0.0, filmZ_} - t.origin;
   const double s = dot(n, toPivot) / dot(n, t.direction);
-  const Vec3d hit = t.origin + t.direction * s;
-  return rasterOfUprightSensorPointMm(film(), movedFilm_.upright(hit - Vec3d{0.0, 0.0, filmZ_}));
+  return t.origin + t.direction * s;
 }
 
-LensCamera::PupilRay LensCamera::pupilRay(const CameraSample& s) const {
-  const Vec3d p = filmPointMm(s.film);
-  return pupilRay(p, bounds_->sample({p.x, p.y}, {s.lens.x, s.lens.y}));
+Vec2d LensCamera::rasterOfFilmHit(const LensRay& t) const {
+  const Vec3d hit = filmHitMm(t);
+  if (!params_.movements.any()) return rasterOfUprightSensorPointMm(film(), {-hit.x, -hit.y});
+  return rasterOfUprightSensorPointMm(film(), movedFilm_.upright(hit - Vec3d{0.0, 0.0, filmZ_}));
 }
 
 LensCamera::PupilRay LensCamera::pupilRay(const Vec3d& p, const std::optional<PupilSample>& ps) const {
@@ -254,10 +253,55 @@ std::optional<CameraRay> LensCamera::flareRay(const CameraSample& s) const {
 
 std::optional<CameraRay> LensCamera::generateCameraSpaceRay(const CameraSample& s) const {
   if (params_.flareReflections) return flareRay(s);
-  const PupilRay pr = pupilRay(s);
+  const Vec3d p = filmPointMm(s.film);
+  const std::optional<PupilSample> pupil = bounds_->sample({p.x, p.y}, {s.lens.x, s.lens.y});
+  const PupilRay pr = pupilRay(p, pupil);
   if (pr.weight == 0.0) return std::nullopt;
   const double wavelength = dispersion_ ? double(s.wavelengthNm) : kWavelengthDNm;
-  return cameraRay(traceLens(pr.ray, wavelength), pr.weight);
+  const std::optional<LensRay> out = traceLens(pr.ray, wavelength);
+  std::optional<CameraRay> r = cameraRay(out, pr.weight);
+  if (r && carriesLanes() && s.secondaryNm[0] > 0.0f) r->laneWeights = laneWeights(s, p, *pupil, *out);
+  return r;
+}
+
+std::array<float, 4> LensCamera::laneWeights(const CameraSample& s, const Vec3d& filmPoint,
+                                             const PupilSample& pupil, const LensRay& out) const {
+  std::array<LaneTrace, 4> lanes;
+  lanes[0] = {true, pupil.pdf / integrand(filmPoint, pupil.point), out.transmittance};
+  const Vec2d pixel{std::floor(double(s.film.x)), std::floor(double(s.film.y))};
+  // The same line from the scene side, from a millimetre out.
+  const LensRay fromScene{out.origin + out.direction, out.direction * -1.0};
+  for (std::size_t k = 1; k < lanes.size(); ++k) lanes[k] = traceLane(fromScene, s.secondaryNm[k - 1], pixel);
+  return wavelengthLaneWeights(lanes);
+}
+
+LaneTrace LensCamera::traceLane(const LensRay& fromScene, double wavelengthNm, const Vec2d& pixel) const {
+  std::optional<LensRay> back;
+  if (!polygon_ && !params_.mask) {
+    back = lens_->traceFromScene(fromScene, wavelengthNm);
+  } else {
+    // The stop as traceLens() takes it: the polygon, then the mask.
+    std::vector<Vec3d> path;
+    path.reserve(lens_->surfaceCount());
+    back = lens_->traceFromScene(fromScene, wavelengthNm, &path);
+    if (!back) return {};
+    const Vec3d& hit = path.at(lens_->paraxial().stopIndex);  // the path runs from the front surface
+    if (polygon_ && !polygon_->contains({hit.x, hit.y})) return {};
+    if (params_.mask) {
+      const double t = params_.mask->transmittance({hit.x, hit.y}, stopRadius_);
+      if (!(t > 0.0)) return {};
+      back->transmittance *= t;
+    }
+  }
+  if (!back || !(back->direction.z > 0.0)) return {};
+  const Vec2d raster = rasterOfFilmHit(*back);
+  if (std::floor(raster.x) != pixel.x || std::floor(raster.y) != pixel.y) return {};
+  const Vec3d filmPoint = filmHitMm(*back);
+  const double s = (bounds_->planeZ() - back->origin.z) / back->direction.z;
+  const Vec3d pupilPoint = back->origin + back->direction * s;
+  const double pdf = bounds_->pdf({filmPoint.x, filmPoint.y}, {pupilPoint.x, pupilPoint.y});
+  if (!(pdf > 0.0)) return {};
+  return {true, pdf / integrand(filmPoint, pupilPoint), back->transmittance};
 }
 
 void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
@@ -301,7 +345,12 @@ void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
                            std::span(traced).first(n));
     else
       lens_->traceFromFilm(std::span(rays).first(n), std::span(traced).first(n));
-    for (std::size_t i = 0; i < n; ++i) out[first + i] = cameraRay(traced[i], weights[i]);
+    const bool lanes = carriesLanes();
+    for (std::size_t i = 0; i < n; ++i) {
+      std::optional<CameraRay>& r = out[first + i] = cameraRay(traced[i], weights[i]);
+      if (r && lanes && samples[first + i].secondaryNm[0] > 0.0f)
+        r->laneWeights = laneWeights(samples[first + i], filmPoints[i], pupil[i], *traced[i]);
+    }
   }
 }
 

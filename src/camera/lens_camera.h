@@ -1,11 +1,13 @@
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "camera/aperture.h"
 #include "camera/aperture_mask.h"
 #include "camera/camera.h"
 #include "camera/exposure.h"
+#include "camera/wavelength_lanes.h"
 #include "core/warnings.h"
 #include "optics/chief_ray.h"
 #include "optics/exit_pupil.h"
@@ -42,6 +44,10 @@ struct LensCameraParams {
   // where the axis meets the film; focusMetres is then where the plane of
   // focus crosses the axis.
   LensMovements movements;
+  // Spectral transport: weigh the secondary wavelengths of each sample
+  // (camera/wavelength_lanes.h) so its path carries all four past the lens.
+  // Off: the path goes on at the hero alone (for tests that compare both).
+  bool carryLanes = true;
 };
 
 // The full element stack (Kolb et al. 1995): film point -> a point inside the
@@ -73,6 +79,11 @@ class LensCamera final : public Camera {
   // wavelength: each sample is traced at its own.
   bool tracesWavelengths() const override {
     return dispersion_ || (params_.flareReflections && params_.coatings == Coating::Single);
+  }
+  // Not with flare (a ghost's path is its hero's) nor diffraction (a bend
+  // drawn at the hero's wavelength).
+  bool carriesLanes() const override {
+    return dispersion_ && params_.carryLanes && !params_.flareReflections && !params_.diffraction;
   }
   const LensSystem& lens() const { return *lens_; }
   const ExitPupilBounds& bounds() const { return *bounds_; }
@@ -113,7 +124,6 @@ class LensCamera final : public Camera {
     LensRay ray;
     double weight = 0.0;  // the irradiance integrand over the pdf, times the exposure scale
   };
-  PupilRay pupilRay(const CameraSample& sample) const;
   // The same from the film point and its pupil sample (nullopt: none).
   PupilRay pupilRay(const Vec3d& filmPoint, const std::optional<PupilSample>& pupil) const;
   // A raster position's point on the film (lens space, mm): the inverted real image.
@@ -124,6 +134,14 @@ class LensCamera final : public Camera {
   // the mask's transmittance at the stop when there is one.
   std::optional<LensRay> traceLens(const LensRay& in, double wavelengthNm) const;
   std::optional<CameraRay> cameraRay(const std::optional<LensRay>& out, double weight) const;
+  // Where a ray leaving the rear toward the film meets it (lens space, mm).
+  Vec3d filmHitMm(const LensRay& towardFilm) const;
+  // CameraRay::laneWeights for a sample traced at its hero: its film point,
+  // pupil sample and the ray that left the lens (camera/wavelength_lanes.h).
+  std::array<float, 4> laneWeights(const CameraSample& sample, const Vec3d& filmPoint,
+                                   const PupilSample& pupil, const LensRay& out) const;
+  // The same outgoing ray traced back from the scene at a secondary wavelength.
+  LaneTrace traceLane(const LensRay& fromScene, double wavelengthNm, const Vec2d& pixel) const;
   // --flare on: a pupil-plane point from a mixture of the exit pupil bounds
   // (the image's rays) and the whole rear element (the ghosts' rays, which
   // leave the film outside the bounds), and the stochastic trace.

@@ -391,8 +391,10 @@ double ExitPupilBounds::pdf(Vec2d filmPoint, Vec2d pupilPoint) const {
   const Vec2d q{pupilPoint.x * cosPhi + pupilPoint.y * sinPhi,
                 -pupilPoint.x * sinPhi + pupilPoint.y * cosPhi};
   const auto& v = polygons_[i].vertices;
-  for (std::size_t k = 0; k < v.size(); ++k)
-    if (cross2(v[k], v[(k + 1) % v.size()], q) < 0.0) return 0.0;
+  // Each edge (v[k - 1], v[k]), the closing one first: no modulo per vertex
+  // (a division; the lanes of spectral transport ask this three times a ray).
+  for (std::size_t k = 0, prev = v.size() - 1; k < v.size(); prev = k++)
+    if (cross2(v[prev], v[k], q) < 0.0) return 0.0;
   return polygons_[i].invArea;
 }
 

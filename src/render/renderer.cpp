@@ -43,6 +43,9 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
   node.direction = normalize(node.direction);
   // A diffracting camera bends each ray by its wavelength, as a dispersive one traces it.
   const bool dispersive = camera.tracesWavelengths() || camera.diffracts();
+  // Spectral transport through a camera that weighs the other wavelengths:
+  // the path carries all four past the lens (camera/wavelength_lanes.h).
+  const bool lanes = response && dispersive && camera.carriesLanes();
   const std::optional<AdaptiveSampling>& adaptive = settings.adaptive;
   const std::optional<SceneIds> ids =
       state.aovs().ids() ? std::optional<SceneIds>(integrator.scene().desc()) : std::nullopt;
@@ -110,7 +113,10 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
             lambdas[k] = SampledWavelengths::sample(u.get1D(kDimWavelength), *response);
             if (dispersive) {
               cs.wavelengthNm = lambdas[k].hero();
-              lambdas[k].terminateSecondary();
+              if (lanes)
+                cs.secondaryNm = {lambdas[k].nm(1), lambdas[k].nm(2), lambdas[k].nm(3)};
+              else
+                lambdas[k].terminateSecondary();
             }
           } else if (dispersive) {
             // RGB transport: one wavelength per sample, weighted into RGB.
@@ -120,6 +126,13 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
           }
         }
         camera.generateRays(std::span(samples).first(n), std::span(rays).first(n));
+        if (lanes)
+          for (std::size_t k = 0; k < n; ++k) {
+            if (rays[k] && rays[k]->laneWeights)
+              lambdas[k].weightLanes(*rays[k]->laneWeights);
+            else
+              lambdas[k].terminateSecondary();
+          }
         if (settings.timing) {
           // The time shares the wavelength's Sobol pair (its second
           // coordinate, unused otherwise), so the two are stratified together.

@@ -18,16 +18,25 @@ SampledWavelengths SampledWavelengths::sample(float u, const FilmResponse& respo
     const FilmResponse::WavelengthDraw draw = response.sampleWavelength(ui);
     s.nm_[i] = draw.nm;
     s.illuminant_[i] = response.illuminant(draw.nm);
-    s.filmWeight_[i] = response.curve(draw.nm) / (float(Spectrum::kLanes) * draw.pdf);
+    s.plainWeight_[i] = response.curve(draw.nm) / (float(Spectrum::kLanes) * draw.pdf);
   }
+  s.filmWeight_ = s.plainWeight_;
   return s;
 }
 
 void SampledWavelengths::terminateSecondary() {
   if (!spectral_ || terminated_) return;
   terminated_ = true;
-  filmWeight_[0] = filmWeight_[0] * float(Spectrum::kLanes);
+  filmWeight_[0] = plainWeight_[0] * float(Spectrum::kLanes);
   for (std::size_t i = 1; i < Spectrum::kLanes; ++i) filmWeight_[i] = Rgb{0, 0, 0};
+}
+
+void SampledWavelengths::weightLanes(const std::array<float, Spectrum::kLanes>& factors) {
+  if (!spectral_ || terminated_) return;
+  for (std::size_t i = 0; i < Spectrum::kLanes; ++i) {
+    filmWeight_[i] = plainWeight_[i] * factors[i];
+    live_[i] = factors[i] > 0.0f ? 1.0f : 0.0f;
+  }
 }
 
 Rgb SampledWavelengths::toFilm(const Spectrum& radiance) const {

@@ -44,9 +44,15 @@ class SampledWavelengths {
   // hero's is multiplied by 4 (RGB transport has none to drop).
   void terminateSecondary();
   bool secondaryTerminated() const { return terminated_; }
+  // Each lane's film weight times its factor (a camera's
+  // CameraRay::laneWeights: the path carries all four past a dispersive
+  // lens); a lane with factor 0 stops. A later terminateSecondary() starts
+  // from the plain weights again: past a dispersive event only the hero's
+  // own trace makes the path.
+  void weightLanes(const std::array<float, Spectrum::kLanes>& factors);
   // 1 in the lanes that still reach the film, 0 in the others: a path's
   // throughput is masked with it so that roulette sees the live lanes only.
-  Spectrum liveLanes() const { return terminated_ ? Spectrum(1, 0, 0, 0) : Spectrum(1.0f); }
+  Spectrum liveLanes() const { return terminated_ ? Spectrum(1, 0, 0, 0) : live_; }
 
   // A path's radiance in the film's RGB.
   Rgb toFilm(const Spectrum& radiance) const;
@@ -60,8 +66,10 @@ class SampledWavelengths {
   bool spectral_ = false;
   bool terminated_ = false;
   std::array<float, Spectrum::kLanes> nm_{550, 550, 550, 550};
-  Spectrum illuminant_{1.0f};                       // the output white's illuminant at nm_
-  std::array<Rgb, Spectrum::kLanes> filmWeight_{};  // c(l) / (4 pdf(l))
+  Spectrum illuminant_{1.0f};                        // the output white's illuminant at nm_
+  std::array<Rgb, Spectrum::kLanes> filmWeight_{};   // c(l) / (4 pdf(l)), times the lane's factor
+  std::array<Rgb, Spectrum::kLanes> plainWeight_{};  // c(l) / (4 pdf(l))
+  Spectrum live_{1.0f};
 };
 
 }  // namespace lensrt
