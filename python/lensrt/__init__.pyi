@@ -199,7 +199,7 @@ class Scene:
         flare: str | bool = "off",
         flare_bounces: int = 2,
         barrel_reflectance: float = 0,
-        spectral: str | bool = "on",
+        spectral: str | bool = "auto",
         sensor_response: _Path | None = None,
         white_balance: float | str | None = None,
         output_space: str = "srgb",

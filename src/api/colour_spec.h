@@ -21,7 +21,7 @@ struct WhiteBalance {
 enum class Transport { Spectral, Rgb, Auto };
 
 struct ColourSpec {
-  Transport transport = Transport::Spectral;
+  Transport transport = Transport::Auto;
   std::string sensorResponse;                // a response name or a .csv file; empty: cie1931
   std::optional<WhiteBalance> whiteBalance;  // none: the response's default
   // The image's RGB; none: the camera response's own RGB ("camera").

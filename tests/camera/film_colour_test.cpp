@@ -48,6 +48,7 @@ TEST(FilmColour, CamerasReproduceTheChartCloseToTheObserver) {
   for (const std::string camera :
        {"nikon-d850", "canon-eos-5d-mark-iv", "sony-ilce-7m3", "hasselblad-l1d-20c"}) {
     test::Flags options;
+    options("--spectral", "on");  // what auto resolves to with a camera response (the plan's choice)
     options("--sensor-response", std::string(camera));
     options("--white-balance", "none");  // D65 is white: the chart as the observer sees it under D65
     const std::shared_ptr<const FilmResponse> film =
@@ -86,6 +87,7 @@ TEST(FilmColour, CameraRgbIsWhatTheCurvesRecord) {
   }
   for (const char* space : {"srgb", "acescg", "camera"}) {
     test::Flags options;
+    options("--spectral", "on");  // what auto resolves to with a camera response (the plan's choice)
     options("--sensor-response", "sony-ilce-7m3");
     options("--output-space", std::string(space));
     options("--white-balance", "3000");

@@ -103,8 +103,9 @@ TEST(ColourCli, OutputSpacesAreTheSameRenderInAnotherRgb) {
   const std::string scene = std::string(LENSRT_SOURCE_DIR) + "/scenes/cornell.gltf";
   const auto render = [&](const std::string& space) {
     const auto out = dir / (space + ".exr");
+    // One transport for all (auto would take RGB for sRGB and spectral for the others).
     const RunResult r = runLensrt({"render", scene, "--res", "24x24", "--spp", "4", "--seed", "5",
-                                   "--output-space", space, "-q", "-o", out.string()});
+                                   "--spectral", "on", "--output-space", space, "-q", "-o", out.string()});
     EXPECT_EQ(r.status, 0) << r.err;
     ImageMetadata meta;
     Image img = readImage(out, &meta);

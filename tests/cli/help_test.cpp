@@ -27,7 +27,9 @@ TEST(Help, TheTopLevelListsOneLinePerCommand) {
     EXPECT_LE(lines[i].size(), 130u) << lines[i];
     listed.push_back(lines[i].substr(2, lines[i].find(' ', 2) - 2));
   }
-  EXPECT_EQ(listed, (std::vector<std::string>{"render", "lens", "diff", "compare", "merge", "sensor", "options"})) << r.out;
+  EXPECT_EQ(listed,
+            (std::vector<std::string>{"render", "lens", "diff", "compare", "merge", "sensor", "options"}))
+      << r.out;
 }
 
 TEST(Help, ACommandsHelpKeepsItsLongText) {

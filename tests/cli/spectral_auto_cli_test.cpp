@@ -95,7 +95,9 @@ TEST(SpectralAutoCli, EachRuleReadFromTheExr) {
   }
   // on and off say so, whatever the scene needs.
   EXPECT_EQ(render(dir, kCornell, with(lens, {"--spectral", "off"})).transport, "rgb (--spectral off)");
-  EXPECT_EQ(render(dir, kCornell, {}).transport, "spectral (--spectral on)");
+  EXPECT_EQ(render(dir, kCornell, {"--spectral", "on"}).transport, "spectral (--spectral on)");
+  // auto is the default.
+  EXPECT_EQ(render(dir, kCornell, {}).transport, "rgb (auto: nothing needs wavelengths)");
 }
 
 TEST(SpectralAutoCli, AutoIsTheResolvedTransportsImage) {

@@ -11,14 +11,15 @@ void addColourRows(std::vector<Option>& table) {
   const auto add = [&table](Option o) -> Option& { return addRow(table, "colour", std::move(o)); };
   add(choice(
       row("--spectral", "spectral", "on|off|auto",
-          "on (default): light travels at four wavelengths per sample (a hero and three rotated "
-          "copies), glTF colours upsampled to smooth spectra, the film the CIE 1931 observer in "
-          "linear sRGB; scene glass with KHR_materials_dispersion and the lens disperse in the same "
-          "transport. off: RGB transport. auto: spectral where the image depends on wavelengths (a "
-          "camera response, --white-balance or --output-space, dispersive scene glass, a lens "
-          "traced with dispersion or coatings under flare, --diffraction on), RGB elsewhere; the "
-          "EXR's lensrt:transport says which and why",
-          "auto", PyValue::Switch),
+          "auto (default): spectral where the image depends on wavelengths (a camera response, "
+          "--white-balance or --output-space, dispersive scene glass, a lens traced with "
+          "dispersion or coatings under flare, --diffraction on), RGB elsewhere, which reaches "
+          "the same error sooner; the EXR's lensrt:transport says which and why. on: light "
+          "travels at four wavelengths per sample (a hero and three rotated copies), glTF colours "
+          "upsampled to smooth spectra, the film the CIE 1931 observer in linear sRGB; scene glass "
+          "with KHR_materials_dispersion and the lens disperse in the same transport. off: RGB "
+          "transport",
+          "on", PyValue::Switch),
       [](auto& s) -> auto& { return s.colour.transport; },
       std::vector<std::pair<std::string, Transport>>{
           {"on", Transport::Spectral}, {"off", Transport::Rgb}, {"auto", Transport::Auto}}));
