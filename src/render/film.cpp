@@ -3,8 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 namespace lensrt {
+
+std::string AovSelection::unsavedAovs() const {
+  std::string names;
+  for (const auto& [on, name] :
+       {std::pair{cryptoObject, "crypto_object"}, std::pair{cryptoMaterial, "crypto_material"},
+        std::pair{objectId, "object_id"}, std::pair{flow, "flow"}})
+    if (on) names += (names.empty() ? "" : ", ") + std::string(name);
+  return names;
+}
 
 std::vector<std::string> filmChannels(const AovSelection& aovs) {
   std::vector<std::string> c{"R", "G", "B", "A"};

@@ -36,6 +36,10 @@ struct AovSelection {
   bool uv = false;
   bool objectCoords = false;
   bool coords() const { return position || uv || objectCoords; }
+  // The AOVs whose sums are not in the running sums (the ID AOVs' id counts,
+  // flow's sums): a checkpoint could not continue them, nor ranks send them.
+  // Their --aov names, e.g. "object_id, flow"; empty: none.
+  std::string unsavedAovs() const;
 };
 
 // The Cryptomatte layers' names, as in the channels and the manifest.

@@ -85,13 +85,10 @@ Image FilmState::image(int frameWidth, int frameHeight) const {
 }
 
 std::vector<std::byte> FilmState::toBytes() const {
-  if (aovs_.flow)
+  if (const std::string unsaved = aovs_.unsavedAovs(); !unsaved.empty())
     throw std::invalid_argument(
-        "the flow AOV cannot be saved as running sums yet: render it without ranks or a checkpoint");
-  if (aovs_.ids())
-    throw std::invalid_argument(
-        "the ID AOVs (crypto_object, crypto_material, object_id) cannot be saved "
-        "as running sums yet: render them without ranks or a checkpoint");
+        "the AOVs " + unsaved +
+        " cannot be saved as running sums yet: render them without ranks or a checkpoint");
   std::vector<std::byte> bytes(kHeaderBytes + pixels_.size() * PixelAccumulator::kStateBytes +
                                coords_.size() * CoordinateSums::kStateBytes);
   std::byte* p = bytes.data();

@@ -48,29 +48,22 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
   if ((args.checkpointSeconds > 0 || !args.resume.empty()) && !exr)
     throw UsageError("--checkpoint/--resume",
                      "need an .exr output (-o OUT.exr), the image that is continued");
-  // The ID AOVs' per-pixel id counts are not part of the running sums, so a
-  // checkpoint could not continue them and ranks could not send them back.
-  // (--tile and --crop parts are whole pixels: lensrt merge joins them.)
-  if (spec.aovs.ids() && (args.checkpointSeconds > 0 || !args.resume.empty()))
-    throw UsageError("--aov",
-                     "crypto_object, crypto_material and object_id cannot be checkpointed or "
-                     "resumed (their id counts are not in the running sums): drop --checkpoint/--resume");
-  if (spec.aovs.ids() && shared)
-    throw UsageError("--aov", fmt::format("crypto_object, crypto_material and object_id cannot be rendered "
-                                          "across {} MPI ranks (their id counts are not sent): run one rank, "
-                                          "or split the frame with --tile and lensrt merge",
-                                          mpi.size()));
   if (args.flo && !spec.aovs.flow) throw UsageError("--flo", "writes the flow AOV: add --aov flow");
-  // Nor are flow's sums (render/motion_flow.h).
-  if (spec.aovs.flow && (args.checkpointSeconds > 0 || !args.resume.empty()))
-    throw UsageError("--aov",
-                     "flow cannot be checkpointed or resumed (its sums are not in the running sums): drop "
-                     "--checkpoint/--resume");
-  if (spec.aovs.flow && shared)
-    throw UsageError("--aov",
-                     fmt::format("flow cannot be rendered across {} MPI ranks (its sums are not "
-                                 "sent): run one rank, or split the frame with --tile and lensrt merge",
-                                 mpi.size()));
+  // The ID AOVs' id counts and flow's sums are not part of the running sums,
+  // so a checkpoint could not continue them and ranks could not send them
+  // back. (--tile and --crop parts are whole pixels: lensrt merge joins them.)
+  if (const std::string unsaved = spec.aovs.unsavedAovs(); !unsaved.empty()) {
+    if (args.checkpointSeconds > 0 || !args.resume.empty())
+      throw UsageError("--aov",
+                       unsaved +
+                           " cannot be checkpointed or resumed (their sums are not in the running sums): "
+                           "drop --checkpoint/--resume");
+    if (shared)
+      throw UsageError("--aov",
+                       fmt::format("{} cannot be rendered across {} MPI ranks (their sums are not "
+                                   "sent): run one rank, or split the frame with --tile and lensrt merge",
+                                   unsaved, mpi.size()));
+  }
   if (leader && !args.resume.empty() && !std::filesystem::exists(args.resume, ec))
     throw InputError(args.resume, "no such checkpoint");
   const std::string& envFile = spec.environment.file;
@@ -194,7 +187,7 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
       shown += args.display->view.empty() ? "(default view)" : args.display->view;
       metadata["lensrt:ocio_display_view"] = shown;
     }
-    if ((args.checkpointSeconds > 0 || !finished) && !spec.aovs.ids() && !spec.aovs.flow)
+    if ((args.checkpointSeconds > 0 || !finished) && spec.aovs.unsavedAovs().empty())
       writeCheckpoint(args.output, state, result.output.image, metadata, options);
     else
       writeOutputImage(args.output, result.output.image, metadata, options);
@@ -213,7 +206,7 @@ int renderToFile(const FileRender& givenJob, MpiJob& mpi) {
     fmt::print(stderr, "lensrt: warning: {}: {} samples with NaN or infinite radiance were dropped\n",
                spec.scene.file, result.output.droppedSamples);
   if (!finished) {
-    if (!args.quiet && (spec.aovs.ids() || spec.aovs.flow))
+    if (!args.quiet && !spec.aovs.unsavedAovs().empty())
       fmt::print(
           stderr,
           "lensrt: interrupted: wrote {} with {} of {} spp (not continuable: it has ID or flow AOVs)\n",
