@@ -145,10 +145,10 @@ class Camera {
   const Transform& worldFromCamera() const { return worldFromCamera_; }
   const FilmGeometry& film() const { return film_; }
 
-  // Not yet for a moved film: the projection ignores LensMovements (--shift, --tilt).
   // The projection (camera/projection.h): where a camera-space point (metres)
   // images in raster pixels at a wavelength (nm), and the ray a raster
-  // position sees, in camera space. Thread-safe and deterministic.
+  // position sees, in camera space. Thread-safe and deterministic. A moved
+  // film (--shift, --tilt) is met where the chief ray's image side crosses it.
   virtual ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const = 0;
   virtual ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const = 0;
   // The same in world space, through this camera's pose (a moving camera's

@@ -362,8 +362,14 @@ ProjectedPoint LensCamera::projectCameraPoint(const Vec3d& p, double wavelengthN
   const ChiefRayImage image =
       chiefRays_->ofPoint({p.x * 1e3, p.y * 1e3, p.z * 1e3 + entrancePupilZ_}, wavelength);
   if (image.status == ChiefRayStatus::Behind) return {image.film, Visibility::Behind};
-  // The upright image is the film point's negative.
-  const Vec2d raster = rasterOfUprightSensorPointMm(film(), image.film * -1.0);
+  // The upright image is the film point's negative; a moved film meets the
+  // chief ray's image-side line elsewhere.
+  std::optional<Vec2d> upright = image.film * -1.0;
+  if (params_.movements.any())
+    upright = movedFilm_.uprightOfLine(
+        image.film, {image.direction.x / image.direction.z, image.direction.y / image.direction.z});
+  if (!upright) return {image.film, Visibility::Behind};
+  const Vec2d raster = rasterOfUprightSensorPointMm(film(), *upright);
   if (image.status == ChiefRayStatus::Blocked) return {raster, Visibility::Blocked};
   return {raster, frameVisibility(film(), raster)};
 }
@@ -371,7 +377,11 @@ ProjectedPoint LensCamera::projectCameraPoint(const Vec3d& p, double wavelengthN
 ProjectedRay LensCamera::unprojectRaster(const Vec2d& raster, double wavelengthNm) const {
   const double wavelength = dispersion_ ? wavelengthNm : kWavelengthDNm;
   const ChiefRayToScene out =
-      chiefRays_->ofFilmPoint(uprightSensorPointOfRaster(film(), raster) * -1.0, wavelength);
+      params_.movements.any()
+          ? chiefRays_->ofFilmPoint(
+                Vec3d{0.0, 0.0, filmZ_} + movedFilm_.offset(uprightSensorPointOfRaster(film(), raster)),
+                wavelength)
+          : chiefRays_->ofFilmPoint(uprightSensorPointOfRaster(film(), raster) * -1.0, wavelength);
   const Vec3d origin{out.ray.origin.x * 1e-3, out.ray.origin.y * 1e-3,
                      (out.ray.origin.z - entrancePupilZ_) * 1e-3};
   const Visibility visibility =

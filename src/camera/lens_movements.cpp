@@ -83,6 +83,14 @@ Vec3d MovedFilm::offset(Vec2d upright) const {
   return {-lateral.x, -lateral.y, -b * sinTilt_};
 }
 
+std::optional<Vec2d> MovedFilm::uprightOfLine(const Vec2d& at, const Vec2d& slope) const {
+  // The point (at + slope s, s) relative to the pivot, on the plane n.w = 0.
+  const double along = normal_.x * slope.x + normal_.y * slope.y + normal_.z;
+  if (!(std::abs(along) > 1e-12)) return std::nullopt;
+  const double s = -(normal_.x * at.x + normal_.y * at.y) / along;
+  return upright({at.x + slope.x * s, at.y + slope.y * s, s});
+}
+
 Vec2d MovedFilm::upright(const Vec3d& offset) const {
   const Vec2d lateral{-offset.x, -offset.y};
   const double a = lateral.x * axis_.x + lateral.y * axis_.y;

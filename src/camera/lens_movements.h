@@ -97,6 +97,11 @@ class MovedFilm {
     double min = 0.0, max = 0.0;
   };
   DepthRange depthRange(const FilmGeometry& film) const;
+  // Where a film-side line meets the moved film, as an upright sensor point
+  // (mm): the line crosses the unmoved film's plane (the pivot's, z toward
+  // the film) at `at` and moves by `slope` (dx/dz, dy/dz) along z. nullopt
+  // when it runs along the film. The projections of moved films use it.
+  std::optional<Vec2d> uprightOfLine(const Vec2d& at, const Vec2d& slope) const;
 
  private:
   Vec2d shift_;

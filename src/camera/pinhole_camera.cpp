@@ -82,7 +82,9 @@ ProjectedPoint PinholeCamera::projectCameraPoint(const Vec3d& p, double) const {
   if (!(p.z < 0.0) || !isFinite(p)) return {{kNaN, kNaN}, Visibility::Behind};
   const FilmGeometry& f = film();
   const double aspect = double(f.width) / f.height;
-  const double ndcX = p.x / -p.z / (tanHalfY_ * aspect), ndcY = p.y / -p.z / tanHalfY_;
+  // A shift moves the film (tilts are refused): the tangent less the shift's.
+  const double ndcX = (p.x / -p.z - shiftTan_.x) / (tanHalfY_ * aspect),
+               ndcY = (p.y / -p.z - shiftTan_.y) / tanHalfY_;
   const Vec2d raster{(ndcX + 1.0) * 0.5 * f.width, (1.0 - ndcY) * 0.5 * f.height};
   return {raster, frameVisibility(f, raster)};
 }
@@ -92,7 +94,7 @@ ProjectedRay PinholeCamera::unprojectRaster(const Vec2d& raster, double) const {
   const double aspect = double(f.width) / f.height;
   const double ndcX = 2.0 * raster.x / f.width - 1.0, ndcY = 1.0 - 2.0 * raster.y / f.height;
   return {{0.0, 0.0, 0.0},
-          normalize(Vec3d{ndcX * tanHalfY_ * aspect, ndcY * tanHalfY_, -1.0}),
+          normalize(Vec3d{ndcX * tanHalfY_ * aspect + shiftTan_.x, ndcY * tanHalfY_ + shiftTan_.y, -1.0}),
           frameVisibility(f, raster)};
 }
 

@@ -165,8 +165,24 @@ double ThickLensCamera::chiefRayScale(double wavelengthNm) const {
   return toH + d * (1.0 - toH / f);
 }
 
+// Behind H' the chief ray moves by t (1 - (z_H - z_E) / f) per mm: with
+// chiefRayScale's K t at the film's plane, the line a moved film meets.
+double ThickLensCamera::chiefRaySlope(double wavelengthNm) const {
+  const ThickLensParams& P = params_;
+  const double f = P.focalLengthMm * (P.dispersion ? P.dispersion->at(wavelengthNm) : 1.0);
+  return 1.0 - (P.frontPrincipalZ - P.entrancePupilZ) / f;
+}
+
 ProjectedPoint ThickLensCamera::projectCameraPoint(const Vec3d& p, double wavelengthNm) const {
   if (!(p.z < 0.0) || !isFinite(p)) return {{kNaN, kNaN}, Visibility::Behind};
+  if (params_.movements.any()) {
+    const Vec2d t{p.x / p.z, p.y / p.z};
+    const std::optional<Vec2d> up =
+        movedFilm_.uprightOfLine(t * chiefRayScale(wavelengthNm), t * chiefRaySlope(wavelengthNm));
+    if (!up) return {{kNaN, kNaN}, Visibility::Behind};
+    const Vec2d raster = rasterOfUprightSensorPointMm(film(), *up);
+    return {raster, frameVisibility(film(), raster)};
+  }
   // t = p.xy / p.z; the upright image is the film point's negative.
   const Vec2d raster =
       rasterOfUprightSensorPointMm(film(), Vec2d{p.x, p.y} * (chiefRayScale(wavelengthNm) / -p.z));
@@ -176,6 +192,12 @@ ProjectedPoint ThickLensCamera::projectCameraPoint(const Vec3d& p, double wavele
 ProjectedRay ThickLensCamera::unprojectRaster(const Vec2d& raster, double wavelengthNm) const {
   const Vec2d up = uprightSensorPointOfRaster(film(), raster);
   const double k = chiefRayScale(wavelengthNm);
+  if (params_.movements.any()) {
+    // The film point (relative to the pivot) on the chief ray's line: K t + c t z.
+    const Vec3d q = movedFilm_.offset(up);
+    const Vec2d t = Vec2d{q.x, q.y} * (1.0 / (k + chiefRaySlope(wavelengthNm) * q.z));
+    return {{0.0, 0.0, 0.0}, normalize(Vec3d{-t.x, -t.y, -1.0}), frameVisibility(film(), raster)};
+  }
   return {{0.0, 0.0, 0.0}, normalize(Vec3d{up.x / k, up.y / k, -1.0}), frameVisibility(film(), raster)};
 }
 

@@ -89,6 +89,8 @@ class ThickLensCamera final : public Camera {
   Aperture exitPupil_;
   // K of the chief ray's image, film = K t (projectCameraPoint), at a wavelength.
   double chiefRayScale(double wavelengthNm) const;
+  // How far the chief ray's film point moves per mm along the axis, per unit of t.
+  double chiefRaySlope(double wavelengthNm) const;
 
   double u_ = 0.0, v_ = 0.0, filmZ_ = 0.0;
   double onAxisWeight_ = 0.0;

@@ -108,14 +108,30 @@ std::optional<CameraRay> ThinLensCamera::tiltedRay(const CameraSample& s) const 
 
 // The chief ray passes the lens's centre undeviated, at every wavelength
 // (the thin lens has no lateral colour), to the film at v.
+// The chief ray passes the lens centre undeviated: behind it the line z t,
+// t = p.xy / p.z, which meets the film's plane at v t (the inverted image)
+// and a moved film where MovedFilm finds it.
 ProjectedPoint ThinLensCamera::projectCameraPoint(const Vec3d& p, double) const {
   if (!(p.z < 0.0) || !isFinite(p)) return {{kNaN, kNaN}, Visibility::Behind};
+  if (params_.movements.any()) {
+    const Vec2d t{p.x / p.z, p.y / p.z};
+    const std::optional<Vec2d> up = movedFilm_.uprightOfLine(t * v_, t);
+    if (!up) return {{kNaN, kNaN}, Visibility::Behind};
+    const Vec2d raster = rasterOfUprightSensorPointMm(film(), *up);
+    return {raster, frameVisibility(film(), raster)};
+  }
   const Vec2d raster = rasterOfUprightSensorPointMm(film(), Vec2d{p.x, p.y} * (v_ / -p.z));
   return {raster, frameVisibility(film(), raster)};
 }
 
 ProjectedRay ThinLensCamera::unprojectRaster(const Vec2d& raster, double) const {
   const Vec2d up = uprightSensorPointOfRaster(film(), raster);
+  if (params_.movements.any()) {
+    // The film point (relative to the pivot at v) on the line z t.
+    const Vec3d q = movedFilm_.offset(up);
+    const Vec2d t = Vec2d{q.x, q.y} * (1.0 / (v_ + q.z));
+    return {{0.0, 0.0, 0.0}, normalize(Vec3d{-t.x, -t.y, -1.0}), frameVisibility(film(), raster)};
+  }
   return {{0.0, 0.0, 0.0}, normalize(Vec3d{up.x, up.y, -v_}), frameVisibility(film(), raster)};
 }
 

@@ -131,7 +131,9 @@ ChiefRayImage ChiefRays::image(const LensRay& sceneRay, double wavelengthNm) con
   if (!rear) rear = open_.traceFromScene(sceneRay, wavelengthNm);
   if (!rear) return {ChiefRayStatus::Blocked, {kNaN, kNaN}};
   const double t = (filmZ_ - rear->origin.z) / rear->direction.z;
-  return {status, {rear->origin.x + rear->direction.x * t, rear->origin.y + rear->direction.y * t}};
+  return {status,
+          {rear->origin.x + rear->direction.x * t, rear->origin.y + rear->direction.y * t},
+          rear->direction};
 }
 
 ChiefRayImage ChiefRays::ofPoint(const Vec3d& p, double wavelengthNm) const {
@@ -187,10 +189,14 @@ ChiefRayImage ChiefRays::ofDirection(const Vec3d& direction, double wavelengthNm
 }
 
 ChiefRayToScene ChiefRays::ofFilmPoint(const Vec2d& film, double wavelengthNm) const {
+  return ofFilmPoint(Vec3d{film.x, film.y, filmZ_}, wavelengthNm);
+}
+
+ChiefRayToScene ChiefRays::ofFilmPoint(const Vec3d& origin, double wavelengthNm) const {
   const LensRay blocked{{kNaN, kNaN, kNaN}, {kNaN, kNaN, kNaN}};
-  if (!isFinite(Vec3d{film.x, film.y, 0.0})) return {ChiefRayStatus::Blocked, blocked};
+  if (!isFinite(origin)) return {ChiefRayStatus::Blocked, blocked};
+  const Vec2d film{origin.x, origin.y};
   const double r = std::hypot(film.x, film.y);
-  const Vec3d origin{film.x, film.y, filmZ_};
   const auto toScene = [&](const LensRay& ray) -> ChiefRayToScene {
     if (std::optional<LensRay> out = lens_.traceFromFilm(ray, wavelengthNm))
       return {ChiefRayStatus::Passes, *out};

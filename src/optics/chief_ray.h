@@ -27,6 +27,9 @@ enum class ChiefRayStatus : std::uint8_t {
 struct ChiefRayImage {
   ChiefRayStatus status = ChiefRayStatus::Blocked;
   Vec2d film;
+  // The image-side ray's unit direction (toward the film): where it meets a
+  // film off the plane (a shifted or tilted one).
+  Vec3d direction{};
 };
 
 // The chief ray of a film point, leaving the lens's front surface toward the
@@ -47,6 +50,8 @@ class ChiefRays {
   ChiefRayImage ofDirection(const Vec3d& direction, double wavelengthNm = kWavelengthDNm) const;
   // A film point (x, y on the film plane): the chief ray that lands there.
   ChiefRayToScene ofFilmPoint(const Vec2d& film, double wavelengthNm = kWavelengthDNm) const;
+  // The same from a film point off that plane (a tilted film), lens space.
+  ChiefRayToScene ofFilmPoint(const Vec3d& film, double wavelengthNm = kWavelengthDNm) const;
 
   double filmZ() const { return filmZ_; }
   // The largest field angle (deg) of the table: the chief rays of the open

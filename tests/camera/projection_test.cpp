@@ -183,6 +183,77 @@ TEST(Projection, RoundTripEveryModel) {
     }
 }
 
+// Shifted and tilted films (--shift, --tilt): the projection lands where the
+// camera's own rendering ray through the pupil's centre (the chief ray)
+// meets the point: the pinhole shifted, the thin and thick lens shifted and
+// tilted about a slanted axis; the full lens shifted, a point in focus from
+// three aperture samples; and every model's round trip with movements.
+TEST(Projection, ShiftedAndTiltedFilmsFollowTheirRays) {
+  const FilmGeometry film = test::testFilm();
+  LensMovements shift;
+  shift.shiftMm = {3.0, -2.0};
+  LensMovements tilt = shift;
+  tilt.tiltDegrees = 6.0;
+  tilt.tiltAxisDegrees = 30.0;
+  const PinholeCamera pinhole(Transform(), film, 0.9, {}, shift);
+  ThinLensParams thinTilted = thin(2.0);
+  thinTilted.movements = tilt;
+  const ThinLensCamera thinLens(Transform(), film, thinTilted);
+  const ParaxialData paraxial = computeParaxial(test::lectureDoubleGauss(0.5));
+  ThickLensParams thickTilted = thickLensFromParaxial(paraxial, 2.0, 1.5);
+  thickTilted.movements = tilt;
+  const ThickLensCamera thickLens(Transform(), film, thickTilted);
+  for (const Camera* cam : std::initializer_list<const Camera*>{&pinhole, &thinLens, &thickLens})
+    for (const Vec3d p : {Vec3d{0.1, -0.05, -1.5}, Vec3d{-0.08, 0.04, -0.6}, Vec3d{0.5, 0.3, -8.0}}) {
+      const ProjectedPoint q = cam->projectCameraPoint(p, kD);
+      ASSERT_EQ(q.visibility, Visibility::Visible) << cam->describe() << " " << p.z;
+      const std::optional<Vec2d> rendered = test::imageOf(*cam, p, {0.5, 0.5}, q.raster);
+      ASSERT_TRUE(rendered) << cam->describe();
+      EXPECT_NEAR(rendered->x, q.raster.x, 2e-3) << cam->describe() << " " << p.z;
+      EXPECT_NEAR(rendered->y, q.raster.y, 2e-3) << cam->describe() << " " << p.z;
+      // Not the unmoved film's image: the movement counts.
+      const ProjectedPoint plain = PinholeCamera(Transform(), film, 0.9).projectCameraPoint(p, kD);
+      if (cam == &pinhole) {
+        EXPECT_GT(std::abs(q.raster.x - plain.raster.x), 10.0);
+      }
+    }
+
+  Warnings warnings;
+  LensCameraParams lp;
+  lp.fNumber = 4.0;
+  lp.focusMetres = 2.0;
+  lp.movements = shift;
+  const LensCamera lens(Transform(), film, library("dgauss-50mm"), lp, Exposure{}, warnings);
+  // On the plane of focus (2 m from the entrance pupil) every aperture sample meets the same film point.
+  const Vec3d inFocus{0.15, 0.08, -2.0};
+  const ProjectedPoint q = lens.projectCameraPoint(inFocus, kD);
+  ASSERT_EQ(q.visibility, Visibility::Visible);
+  for (const Vec2d aperture : {Vec2d{0.45, 0.55}, Vec2d{0.35, 0.62}, Vec2d{0.62, 0.4}}) {
+    const std::optional<Vec2d> rendered = test::imageOf(lens, inFocus, aperture, q.raster);
+    ASSERT_TRUE(rendered) << aperture.x << " at " << q.raster.x << ", " << q.raster.y;
+    EXPECT_NEAR(rendered->x, q.raster.x, 0.05) << aperture.x;
+    EXPECT_NEAR(rendered->y, q.raster.y, 0.05) << aperture.x;
+  }
+  const ProjectedPoint unshifted = fullLens(library("dgauss-50mm"), 2.0)->projectCameraPoint(inFocus, kD);
+  // 3 mm right and 2 mm down on the film: the picture moves 3 mm left and 2 mm down... in pixels of 36/640
+  // mm.
+  EXPECT_NEAR(q.raster.x - unshifted.raster.x, -3.0 / (36.0 / 640.0), 0.5);
+
+  lp.movements = tilt;
+  const LensCamera tiltedLens(Transform(), film, library("dgauss-50mm"), lp, Exposure{}, warnings);
+  for (const Camera* cam :
+       std::initializer_list<const Camera*>{&pinhole, &thinLens, &thickLens, &lens, &tiltedLens})
+    for (const Vec2d raster : {Vec2d{320.0, 180.0}, Vec2d{40.5, 30.5}, Vec2d{600.25, 320.75}}) {
+      const ProjectedRay ray = cam->unprojectRaster(raster, kD);
+      ASSERT_EQ(ray.visibility, Visibility::Visible) << cam->describe();
+      for (const double along : {0.7, 5.0}) {
+        const ProjectedPoint p = cam->projectCameraPoint(ray.origin + ray.direction * along, kD);
+        EXPECT_NEAR(p.raster.x, raster.x, 1e-6) << cam->describe() << " along " << along;
+        EXPECT_NEAR(p.raster.y, raster.y, 1e-6) << cam->describe() << " along " << along;
+      }
+    }
+}
+
 TEST(Projection, WorldSpaceThroughThePoseAndThreadSafe) {
   const Transform pose = Transform::lookAt({1.0, 2.0, 3.0}, {0.0, 0.5, -1.0}, {0.0, 1.0, 0.0});
   const auto cam = fullLens(library("dgauss-50mm"), 3.0, false, pose);
