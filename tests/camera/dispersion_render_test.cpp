@@ -168,22 +168,6 @@ TEST(DispersionRender, DeterministicAcrossThreadsTilesAndPasses) {
   EXPECT_EQ(std::memcmp(one.pixels.data(), passed.pixels.data(), one.pixels.size() * sizeof(float)), 0);
 }
 
-struct Centroid {
-  double x = 0, y = 0;
-};
-Centroid centroid(const Image& img, const char* name) {
-  const int c = img.channelIndex(name);
-  double sum = 0, sx = 0, sy = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      const double v = img.at(x, y, c);
-      sum += v;
-      sx += v * (img.originX + x + 0.5);
-      sy += v * (img.originY + y + 0.5);
-    }
-  return {sx / sum, sy / sum};
-}
-
 // The emitter of the lateral-colour tests: a 10 cm white square 100 m away,
 // 17 m right of the axis, seen at f/8 focused on it. Its image lies at about
 // 0.95 of the half width of a 36x24 mm sensor of 5 um pixels; only a 48x48
@@ -255,8 +239,8 @@ TEST(DispersionRender, EdgeEmitterSplitsByThePredictedLateralColour) {
   const int cx = int(std::lround(xD));
   const Image a = renderEdgeEmitter(on, cx);
   const Image b = renderEdgeEmitter(off, cx);
-  const Centroid rOn = centroid(a, "R"), bOn = centroid(a, "B");
-  const Centroid rOff = centroid(b, "R"), bOff = centroid(b, "B");
+  const test::Centroid rOn = test::centroid(a, "R"), bOn = test::centroid(a, "B");
+  const test::Centroid rOff = test::centroid(b, "R"), bOff = test::centroid(b, "B");
   std::printf(
       "d-line centroid at x = %.3f px; R centroid %.3f, B %.3f: R - B = %.3f px (%.3f um), "
       "predicted %.3f px\n",
@@ -322,7 +306,7 @@ TEST(DispersionRender, EdgeEmitterThroughTheThinAndThickLens) {
     const double uprightX = imageDistanceMm * offsetM / distanceM;
     const int cx = int(std::lround(rasterOfUprightSensorPointMm(film, {uprightX, 0.0}).x));
     const Image img = renderEdgeEmitter(*camera, cx);
-    const Centroid r = centroid(img, "R"), b = centroid(img, "B");
+    const test::Centroid r = test::centroid(img, "R"), b = test::centroid(img, "B");
     std::printf("%s lens: R centroid %.3f, B %.3f: R - B = %.3f px, predicted %.3f px\n", name, r.x, b.x,
                 r.x - b.x, predictedPx);
     EXPECT_NEAR(r.x, cx, 2.0);  // the emitter is inside the rendered region

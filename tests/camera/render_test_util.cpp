@@ -61,6 +61,19 @@ RenderedImage renderScene(SceneDesc desc, const Camera& camera, const Environmen
   return out;
 }
 
+Centroid centroid(const Image& img, const char* channel) {
+  const int c = img.channelIndex(channel);
+  double sum = 0, sx = 0, sy = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const double v = img.at(x, y, c);
+      sum += v;
+      sx += v * (img.originX + x + 0.5);
+      sy += v * (img.originY + y + 0.5);
+    }
+  return {sx / sum, sy / sum};
+}
+
 std::vector<double> columnProfile(const RenderedImage& img) {
   const int w = img.image.width, h = img.image.height;
   std::vector<double> profile(w, 0.0);

@@ -31,6 +31,12 @@ struct RenderedImage {
 RenderedImage renderScene(SceneDesc desc, const Camera& camera, const Environment& env, int spp,
                           bool variance = false);
 
+// A channel's centroid in frame pixels (a region's origin included).
+struct Centroid {
+  double x = 0, y = 0;
+};
+Centroid centroid(const Image& img, const char* channel);
+
 // Mean of channel R over each column: a vertical edge's profile.
 std::vector<double> columnProfile(const RenderedImage& img);
 

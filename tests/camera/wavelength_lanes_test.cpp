@@ -21,6 +21,7 @@
 #include "render/lights.h"
 #include "render/material_eval.h"
 #include "render/renderer.h"
+#include "render_test_util.h"
 #include "scene/render_scene.h"
 
 namespace lensrt {
@@ -205,22 +206,6 @@ TEST(WavelengthLanes, ColourChartConvergesToTheHeroOnlyRender) {
   EXPECT_LT(g.worstChannelZ, 4.0);
 }
 
-struct Centroid {
-  double x = 0, y = 0;
-};
-Centroid centroid(const Image& img, const char* name) {
-  const int c = img.channelIndex(name);
-  double sum = 0, sx = 0, sy = 0;
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      const double v = img.at(x, y, c);
-      sum += v;
-      sx += v * (img.originX + x + 0.5);
-      sy += v * (img.originY + y + 0.5);
-    }
-  return {sx / sum, sy / sum};
-}
-
 // The lateral colour of dispersion_render_test's edge emitter (a 10 cm white
 // square 100 m away, 17 m to the side, at f/8 on 5 um pixels), now under
 // spectral transport: the R - B centroid offset with the lanes carried is
@@ -243,8 +228,8 @@ TEST(WavelengthLanes, LateralColourFringeStands) {
   const Image a = render(emitter, on, rs, 0.0f);
   rs.seed = 2;
   const Image b = render(emitter, off, rs, 0.0f);
-  const double onRB = centroid(a, "R").x - centroid(a, "B").x,
-               offRB = centroid(b, "R").x - centroid(b, "B").x;
+  const double onRB = test::centroid(a, "R").x - test::centroid(a, "B").x,
+               offRB = test::centroid(b, "R").x - test::centroid(b, "B").x;
   std::printf("R - B centroid: lanes %.4f px, hero only %.4f px: %.3f um apart\n", onRB, offRB,
               (onRB - offRB) * 5.0);
   EXPECT_GT(std::abs(offRB), 0.3);  // a fringe to keep (0.57 px through the tracer)
