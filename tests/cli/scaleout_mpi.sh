@@ -22,7 +22,11 @@ set -euo pipefail
 mode=$1 lensrt=$2 src=$3
 dir=$(mktemp -d) && trap 'rm -rf "$dir"' EXIT
 cd "$dir"
-mpirun=(mpirun -np 2 --oversubscribe --allow-run-as-root)
+# Each job's session directory under this test's own: ctest runs two of these
+# at once, and two mpiruns creating /tmp/ompi.HOST.UID together can fail
+# with "File exists" (seen once in a CI run).
+mkdir -p "$dir/ompi"
+mpirun=(mpirun -np 2 --oversubscribe --allow-run-as-root --mca orte_tmpdir_base "$dir/ompi")
 mpi=(timeout 60 "${mpirun[@]}")
 
 fail() {
