@@ -180,7 +180,10 @@ Vec3d LensCamera::filmHitMm(const LensRay& t) const {
 }
 
 Vec2d LensCamera::rasterOfFilmHit(const LensRay& t) const {
-  const Vec3d hit = filmHitMm(t);
+  return rasterOfFilmPoint(filmHitMm(t));
+}
+
+Vec2d LensCamera::rasterOfFilmPoint(const Vec3d& hit) const {
   if (!params_.movements.any()) return rasterOfUprightSensorPointMm(film(), {-hit.x, -hit.y});
   return rasterOfUprightSensorPointMm(film(), movedFilm_.upright(hit - Vec3d{0.0, 0.0, filmZ_}));
 }
@@ -294,9 +297,9 @@ LaneTrace LensCamera::traceLane(const LensRay& fromScene, double wavelengthNm, c
     }
   }
   if (!back || !(back->direction.z > 0.0)) return {};
-  const Vec2d raster = rasterOfFilmHit(*back);
-  if (std::floor(raster.x) != pixel.x || std::floor(raster.y) != pixel.y) return {};
   const Vec3d filmPoint = filmHitMm(*back);
+  const Vec2d raster = rasterOfFilmPoint(filmPoint);
+  if (std::floor(raster.x) != pixel.x || std::floor(raster.y) != pixel.y) return {};
   const double s = (bounds_->planeZ() - back->origin.z) / back->direction.z;
   const Vec3d pupilPoint = back->origin + back->direction * s;
   const double pdf = bounds_->pdf({filmPoint.x, filmPoint.y}, {pupilPoint.x, pupilPoint.y});

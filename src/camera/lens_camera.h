@@ -136,6 +136,8 @@ class LensCamera final : public Camera {
   std::optional<CameraRay> cameraRay(const std::optional<LensRay>& out, double weight) const;
   // Where a ray leaving the rear toward the film meets it (lens space, mm).
   Vec3d filmHitMm(const LensRay& towardFilm) const;
+  // A point on the (moved) film, lens space, as a raster position.
+  Vec2d rasterOfFilmPoint(const Vec3d& filmPoint) const;
   // CameraRay::laneWeights for a sample traced at its hero: its film point,
   // pupil sample and the ray that left the lens (camera/wavelength_lanes.h).
   std::array<float, 4> laneWeights(const CameraSample& sample, const Vec3d& filmPoint,

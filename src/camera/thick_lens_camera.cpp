@@ -160,9 +160,7 @@ std::optional<CameraRay> ThickLensCamera::tiltedRay(const CameraSample& s) const
 // through E images there; the thin lens is the case z_H = z_H' = z_E, K = v.
 double ThickLensCamera::chiefRayScale(double wavelengthNm) const {
   const ThickLensParams& P = params_;
-  const double f = P.focalLengthMm * (P.dispersion ? P.dispersion->at(wavelengthNm) : 1.0);
-  const double toH = P.frontPrincipalZ - P.entrancePupilZ, d = filmZ_ - P.rearPrincipalZ;
-  return toH + d * (1.0 - toH / f);
+  return (P.frontPrincipalZ - P.entrancePupilZ) + (filmZ_ - P.rearPrincipalZ) * chiefRaySlope(wavelengthNm);
 }
 
 // Behind H' the chief ray moves by t (1 - (z_H - z_E) / f) per mm: with
