@@ -150,6 +150,13 @@ class Camera {
   // position sees, in camera space. Thread-safe and deterministic. A moved
   // film (--shift, --tilt) is met where the chief ray's image side crosses it.
   virtual ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const = 0;
+  // The same, where the full lens starts its chief-ray solve from `hint`
+  // (a nearby point's, optics/chief_ray_hint.h) and leaves its own there;
+  // the other models' projections are closed forms that ignore it.
+  virtual ProjectedPoint projectCameraPointHinted(const Vec3d& point, double wavelengthNm,
+                                                  ChiefRayHint*) const {
+    return projectCameraPoint(point, wavelengthNm);
+  }
   virtual ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const = 0;
   // The same in world space, through this camera's pose (a moving camera's
   // caller applies the pose of the moment to projectCameraPoint instead).

@@ -361,9 +361,14 @@ void LensCamera::generateCameraSpaceRays(std::span<const CameraSample> samples,
 // the wavelength when the camera traces each sample at its own (else the
 // d line, as the render's rays are).
 ProjectedPoint LensCamera::projectCameraPoint(const Vec3d& p, double wavelengthNm) const {
+  return projectCameraPointHinted(p, wavelengthNm, nullptr);
+}
+
+ProjectedPoint LensCamera::projectCameraPointHinted(const Vec3d& p, double wavelengthNm,
+                                                    ChiefRayHint* hint) const {
   const double wavelength = dispersion_ ? wavelengthNm : kWavelengthDNm;
   const ChiefRayImage image =
-      chiefRays_->ofPoint({p.x * 1e3, p.y * 1e3, p.z * 1e3 + entrancePupilZ_}, wavelength);
+      chiefRays_->ofPoint({p.x * 1e3, p.y * 1e3, p.z * 1e3 + entrancePupilZ_}, wavelength, hint);
   if (image.status == ChiefRayStatus::Behind) return {image.film, Visibility::Behind};
   // The upright image is the film point's negative; a moved film meets the
   // chief ray's image-side line elsewhere.

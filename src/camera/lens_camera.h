@@ -99,6 +99,8 @@ class LensCamera final : public Camera {
   // Camera space origin (the entrance pupil) in lens space z, mm.
   double entrancePupilZ() const { return entrancePupilZ_; }
   ProjectedPoint projectCameraPoint(const Vec3d& point, double wavelengthNm) const override;
+  ProjectedPoint projectCameraPointHinted(const Vec3d& point, double wavelengthNm,
+                                          ChiefRayHint* hint) const override;
   ProjectedRay unprojectRaster(const Vec2d& raster, double wavelengthNm) const override;
   // The camera-space ray from a raster position through a point of the
   // rear-vertex plane (lens space x, y in mm), traced at `wavelengthNm`;

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "core/vec.h"
+#include "optics/chief_ray_hint.h"
 
 namespace lensrt {
 

@@ -7,9 +7,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "core/vec.h"
+#include "optics/chief_ray_hint.h"
 #include "optics/glass.h"
 #include "optics/lens_system.h"
 
@@ -46,6 +49,9 @@ class ChiefRays {
 
   // An object point (lens space, mm) in front of the lens.
   ChiefRayImage ofPoint(const Vec3d& point, double wavelengthNm = kWavelengthDNm) const;
+  // The same, started from `hint` when it is valid; `hint` then holds this
+  // solve's (unchanged when there was none).
+  ChiefRayImage ofPoint(const Vec3d& point, double wavelengthNm, ChiefRayHint* hint) const;
   // A point at infinity whose light travels along `direction` (z > 0).
   ChiefRayImage ofDirection(const Vec3d& direction, double wavelengthNm = kWavelengthDNm) const;
   // A film point (x, y on the film plane): the chief ray that lands there.
@@ -74,6 +80,10 @@ class ChiefRays {
   // Where the open lens's image-side ray meets the film, and whether the
   // real lens passes the whole ray.
   ChiefRayImage image(const LensRay& sceneRay, double wavelengthNm) const;
+  // The same from a trace paused at the stop by open_, with its hits.
+  ChiefRayImage imageFrom(const LensSystem::PausedTrace& paused, std::span<const Vec3d> hits,
+                          double wavelengthNm) const;
+  ChiefRayImage imageOf(const std::optional<LensRay>& rear, ChiefRayStatus status) const;
 
   LensSystem lens_;
   LensSystem open_;  // lens_ with its rims opened

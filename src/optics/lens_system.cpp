@@ -192,19 +192,23 @@ double refractionTransmittance(Coating coating, const Vec3d& in, const Vec3d& ou
 
 // kCoated: the system models coatings (coating_ is set); a separate
 // instantiation so that the lossless trace carries no Fresnel bookkeeping.
+// Crossings [first, last) of the trace's order (from the film: the last
+// surface first); false when blocked.
 template <bool kFromFilm, bool kCoated>
-std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm,
-                                         std::vector<Vec3d>* path) const {
-  if (!validInput<kFromFilm>(ray)) return std::nullopt;
+inline bool LensSystem::cross(Vec3d& o, Vec3d& d, double& transmittance, int first, int last,
+                              double wavelengthNm, std::vector<Vec3d>* path) const {
   const bool dLine = wavelengthNm == kWavelengthDNm;
   const int count = surfaceCount();
   const TraceSurface* const surfaces = surfaces_.data();
-  Vec3d o = ray.origin;
-  Vec3d d = normalize(ray.direction);
   // Index on the side the ray comes from, carried along for dispersion.
-  double nFrom = dLine ? 1.0 : (kFromFilm ? surfaces[count - 1].after.index(wavelengthNm) : 1.0);
-  double transmittance = ray.transmittance;
-  for (int k = 0; k < count; ++k) {
+  double nFrom = 1.0;
+  if (!dLine) {
+    if constexpr (kFromFilm)
+      nFrom = surfaces[count - 1 - first].after.index(wavelengthNm);
+    else
+      nFrom = first > 0 ? surfaces[first - 1].after.index(wavelengthNm) : 1.0;
+  }
+  for (int k = first; k < last; ++k) {
     const int i = kFromFilm ? count - 1 - k : k;
     const TraceSurface& s = surfaces[i];
     double eta = 0.0, n1 = 1.0, n2 = 1.0;
@@ -223,10 +227,23 @@ std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm
       if (!s.isStop && n1 != nFrom) eta = n1 / nFrom;
     }
     const Vec3d in = d;
-    if (!step<kFromFilm>(s, eta, o, d, path)) return std::nullopt;
+    if (!step<kFromFilm>(s, eta, o, d, path)) return false;
     if constexpr (kCoated)
       if (eta != 0.0) transmittance *= refractionTransmittance(*coating_, in, d, n1, n2, wavelengthNm);
   }
+  return true;
+}
+
+template <bool kFromFilm, bool kCoated>
+std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path,
+                                         int crossings) const {
+  if (!validInput<kFromFilm>(ray)) return std::nullopt;
+  const int count = surfaceCount();
+  Vec3d o = ray.origin;
+  Vec3d d = normalize(ray.direction);
+  double transmittance = ray.transmittance;
+  const int last = crossings < 0 ? count : std::min(crossings, count);
+  if (!cross<kFromFilm, kCoated>(o, d, transmittance, 0, last, wavelengthNm, path)) return std::nullopt;
   return finished(o, d, transmittance);
 }
 
@@ -552,6 +569,44 @@ std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray, double wav
                                                   std::vector<Vec3d>* path) const {
   return coating_ ? trace<false, true>(ray, wavelengthNm, path)
                   : trace<false, false>(ray, wavelengthNm, path);
+}
+
+// Coatings change only the transmittance: the uncoated trace's hits are the
+// coated one's, bit for bit.
+std::optional<LensSystem::PausedTrace> LensSystem::traceFromSceneTo(const LensRay& ray, int surface,
+                                                                    double wavelengthNm,
+                                                                    std::vector<Vec3d>* path) const {
+  if (surface < 0 || surface >= surfaceCount() || !validInput<false>(ray)) return std::nullopt;
+  PausedTrace t{ray.origin, normalize(ray.direction), surface + 1};
+  double transmittance = 1.0;
+  if (!cross<false, false>(t.origin, t.direction, transmittance, 0, t.crossed, wavelengthNm, path))
+    return std::nullopt;
+  return t;
+}
+
+std::optional<LensRay> LensSystem::resumeFromScene(const PausedTrace& paused, double wavelengthNm) const {
+  if (paused.crossed < 0 || paused.crossed > surfaceCount()) return std::nullopt;
+  Vec3d o = paused.origin, d = paused.direction;
+  double transmittance = 1.0;
+  if (!cross<false, false>(o, d, transmittance, paused.crossed, surfaceCount(), wavelengthNm, nullptr))
+    return std::nullopt;
+  return finished(o, d, transmittance);
+}
+
+bool LensSystem::rimsHold(std::span<const Vec3d> hits) const {
+  if (hits.size() > surfaces_.size()) return false;
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    const TraceSurface& s = surfaces_[i];
+    // An asphere's hit is found within its own rim (optics/asphere.h).
+    if (!s.asphere && hits[i].x * hits[i].x + hits[i].y * hits[i].y > s.apertureRadius2) return false;
+  }
+  return true;
+}
+
+std::optional<Vec3d> LensSystem::hitFromFilm(const LensRay& ray, int surface, double wavelengthNm) const {
+  if (surface < 0 || surface >= surfaceCount()) return std::nullopt;
+  const std::optional<LensRay> at = trace<true, false>(ray, wavelengthNm, nullptr, surfaceCount() - surface);
+  return at ? std::optional<Vec3d>(at->origin) : std::nullopt;
 }
 
 }  // namespace lensrt

@@ -79,6 +79,30 @@ class LensSystem {
   std::optional<LensRay> traceFromScene(const LensRay& ray, double wavelengthNm = kWavelengthDNm,
                                         std::vector<Vec3d>* path = nullptr) const;
 
+  // A trace from the scene paused after surface `surface`: traceFromScene's
+  // arithmetic up to there (its path's entries, the same bits), to resume
+  // later. Coatings are left out: they change the transmittance alone.
+  struct PausedTrace {
+    Vec3d origin, direction;  // at the last surface crossed, and on from it
+    int crossed = 0;          // surfaces crossed
+  };
+  std::optional<PausedTrace> traceFromSceneTo(const LensRay& ray, int surface,
+                                              double wavelengthNm = kWavelengthDNm,
+                                              std::vector<Vec3d>* path = nullptr) const;
+  // The rest of the trace, by this lens (which may differ from the paused
+  // trace's in its rims alone, as withOpenRims does): with the rims held
+  // (rimsHold), traceFromScene's ray, bit for bit; transmittance 1.
+  std::optional<LensRay> resumeFromScene(const PausedTrace& paused,
+                                         double wavelengthNm = kWavelengthDNm) const;
+  // Whether this lens's rims hold the hits, on its first hits.size()
+  // surfaces from the scene, of a trace by the same lens with other rims.
+  bool rimsHold(std::span<const Vec3d> hits) const;
+  // Where a ray from the film meets surface `surface`: traceFromFilm's
+  // arithmetic up to there (its path's entry, the same bits); nullopt when
+  // the ray is blocked on the way or at that surface.
+  std::optional<Vec3d> hitFromFilm(const LensRay& ray, int surface,
+                                   double wavelengthNm = kWavelengthDNm) const;
+
   // A ghost (optics/ghosts.h): a ray from the scene that reflects at surface
   // `first`, back toward the scene, then at `second` (second < first), and
   // leaves the rear surface toward the film; every other surface refracts
@@ -211,7 +235,12 @@ class LensSystem {
   void traceFromFilmVectorized(std::span<const LensRay> rays, std::span<const double> wavelengthsNm,
                                std::span<std::optional<LensRay>> out) const;
   template <bool kFromFilm, bool kCoated>
-  std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path) const;
+  bool cross(Vec3d& o, Vec3d& d, double& transmittance, int first, int last, double wavelengthNm,
+             std::vector<Vec3d>* path) const;
+  // crossings: how many surfaces to cross (from the ray's side); negative: all.
+  template <bool kFromFilm, bool kCoated>
+  std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path,
+                               int crossings = -1) const;
 
   LensPrescription prescription_;
   ParaxialData paraxial_;

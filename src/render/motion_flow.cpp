@@ -28,8 +28,9 @@ std::optional<Vec3d> surfacePointAt(const SceneDesc& scene, bool spanEnd, int in
 
 namespace {
 
-std::optional<Vec2d> imageAt(const FlowMoment& m, const SceneDesc& rendered, const Camera& camera,
-                             int instance, std::uint32_t primitive, const Vec2f& barycentric) {
+// The surface point in the camera's frame at a moment (metres).
+std::optional<Vec3d> cameraPointAt(const FlowMoment& m, const SceneDesc& rendered, int instance,
+                                   std::uint32_t primitive, const Vec2f& barycentric) {
   const SceneDesc& scene = m.scene ? *m.scene : rendered;
   // Another pose of the file lists the same instances in the same order;
   // one placed by another node is not this object.
@@ -40,8 +41,12 @@ std::optional<Vec2d> imageAt(const FlowMoment& m, const SceneDesc& rendered, con
     return std::nullopt;
   const std::optional<Vec3d> p = surfacePointAt(scene, m.spanEnd, instance, primitive, barycentric);
   if (!p) return std::nullopt;
+  return m.cameraFromWorld.point(*p);
+}
+
+std::optional<Vec2d> imageOf(const Camera& camera, const Vec3d& point, ChiefRayHint& hint) {
   // The wavelength Lens.project takes by default (the d line).
-  const ProjectedPoint q = camera.projectCameraPoint(m.cameraFromWorld.point(*p), kWavelengthDNm);
+  const ProjectedPoint q = camera.projectCameraPointHinted(point, kWavelengthDNm, &hint);
   if (!std::isfinite(q.raster.x) || !std::isfinite(q.raster.y)) return std::nullopt;
   return q.raster;
 }
@@ -49,23 +54,36 @@ std::optional<Vec2d> imageAt(const FlowMoment& m, const SceneDesc& rendered, con
 }  // namespace
 
 SampleFlow sampleFlow(const MotionFlow& flow, const SceneDesc& rendered, const Camera& camera, int instance,
-                      std::uint32_t primitive, const Vec2f& barycentric) {
-  const auto at = [&](const FlowMoment& m) {
-    return imageAt(m, rendered, camera, instance, primitive, barycentric);
-  };
-  const std::optional<Vec2d> now = at(flow.now);
+                      std::uint32_t primitive, const Vec2f& barycentric, FlowHints& hints) {
+  const std::optional<Vec3d> here = cameraPointAt(flow.now, rendered, instance, primitive, barycentric);
+  if (!here) return {};
+  const std::optional<Vec2d> now = imageOf(camera, *here, hints.now);
   if (!now) return {};
+  const auto at = [&](const FlowMoment& m, ChiefRayHint& hint) -> std::optional<Vec2d> {
+    const std::optional<Vec3d> there = cameraPointAt(m, rendered, instance, primitive, barycentric);
+    if (!there) return std::nullopt;
+    // Still against the camera: the same image, so no motion, exactly (a
+    // solve from another start could differ in its last bits).
+    if (*there == *here) return now;
+    // The pixel's first sample at another moment starts where it did now.
+    if (!hint.valid()) hint = hints.now;
+    return imageOf(camera, *there, hint);
+  };
   SampleFlow f;
-  if (const std::optional<Vec2d> next = at(flow.next)) f.forward = *next - *now;
+  if (const std::optional<Vec2d> next = at(flow.next, hints.next)) f.forward = *next - *now;
   if (flow.overShutter) {
     if (f.forward) f.backward = *f.forward * -1.0;
-  } else if (const std::optional<Vec2d> previous = at(flow.previous)) {
+  } else if (const std::optional<Vec2d> previous = at(flow.previous, hints.previous)) {
     f.backward = *previous - *now;
   }
   return f;
 }
 
-void FlowSums::add(const SampleFlow& f) {
+void FlowSums::add(const SampleFlow& f, int hitInstance) {
+  if (taken == 0)
+    instance = hitInstance;
+  else if (hitInstance != instance)
+    mixed = true;
   ++taken;
   if (f.forward) {
     forward[0] += f.forward->x;

@@ -48,26 +48,40 @@ std::optional<Vec3d> surfacePointAt(const SceneDesc& scene, bool spanEnd, int in
 struct SampleFlow {
   std::optional<Vec2d> forward, backward;
 };
+// Where the full lens's chief-ray solves of a pixel's samples start: at
+// each moment, the pixel's last sample's solve there.
+struct FlowHints {
+  ChiefRayHint now, next, previous;
+};
 SampleFlow sampleFlow(const MotionFlow& flow, const SceneDesc& rendered, const Camera& camera, int instance,
-                      std::uint32_t primitive, const Vec2f& barycentric);
+                      std::uint32_t primitive, const Vec2f& barycentric, FlowHints& hints);
 
 // The samples that hit whose motion a pixel's flow averages: its first
 // ones (in sample order, so the same whatever the threads, tiles or passes).
 // Each costs three projections, and through the full lens a projection is
-// a chief-ray solve (~1 us), more than a path of a simple scene: past a few
+// a chief-ray solve (~0.5 us), more than a path of a simple scene: past a few
 // samples the flow of a pixel changes little (only where it mixes surfaces),
-// while its cost would grow with the spp.
+// while its cost would grow with the spp. So: its first kFlowSamplesPerPixel,
+// or its first kFlowSamplesOneObject when those all hit one object (one
+// instance): their motions then differ only by where on it they land.
 inline constexpr std::uint32_t kFlowSamplesPerPixel = 8;
+inline constexpr std::uint32_t kFlowSamplesOneObject = 4;
 
 // A pixel's running flow sums: each direction's displacement summed over
 // the samples that have one, and their count.
 struct FlowSums {
   double forward[2] = {0, 0}, backward[2] = {0, 0};
-  std::uint32_t forwardCount = 0, backwardCount = 0;
-  std::uint32_t taken = 0;  // samples added, with an image or not
-  // Whether the pixel has its kFlowSamplesPerPixel samples: later ones are not projected.
-  bool full() const { return taken >= kFlowSamplesPerPixel; }
-  void add(const SampleFlow& f);
+  // From the pixel's own samples in order: the same bits whatever the schedule.
+  FlowHints hints;
+  std::int32_t instance = -1;  // the first sample's
+  // Counts up to kFlowSamplesPerPixel.
+  std::uint8_t forwardCount = 0, backwardCount = 0;
+  std::uint8_t taken = 0;  // samples added, with an image or not
+  bool mixed = false;      // they hit more than one instance
+  // Whether the pixel has its samples (see above): later ones are not projected.
+  bool full() const { return taken >= kFlowSamplesPerPixel || (taken >= kFlowSamplesOneObject && !mixed); }
+  // A sample of the instance `hitInstance`.
+  void add(const SampleFlow& f, int hitInstance);
   // flow.forward.X, .Y, flow.backward.X, .Y: the means, 0 without samples.
   void write(float* out) const;
 };

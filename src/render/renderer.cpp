@@ -182,7 +182,8 @@ void renderPass(const Camera& camera, const Integrator& integrator, const Render
               FlowSums& sums = state.flow(columns[j / spp], y);
               if (!sums.full())
                 sums.add(sampleFlow(*flow, integrator.scene().desc(), camera, path.instance, path.primitive,
-                                    path.barycentric));
+                                    path.barycentric, sums.hints),
+                         path.instance);
             }
           }
         }

@@ -159,3 +159,50 @@ TEST(ChiefRays, BehindAndOutsideTheFieldAreFlagged) {
 
 }  // namespace
 }  // namespace lensrt
+
+namespace lensrt {
+namespace {
+
+// A solve started from a nearby point's (ChiefRayHint, as flow passes a
+// pixel's solves on) converges to the table-started solve's image: the
+// start moves only the last bits. A wrong hint costs traces, not accuracy.
+TEST(ChiefRays, AHintedSolveLandsWhereATableStartedOneDoes) {
+  for (const char* name : {"dgauss-50mm", "wide-22mm", "canon-rf50-51mm"}) {
+    const LensSystem lens(test::libraryLens(name));
+    const ChiefRays rays(lens, lens.rearZ() + focusFilmDistance(lens, 2000.0));
+    double worst = 0.0;
+    int hinted = 0;
+    for (int i = 0; i < 300; ++i) {
+      // A pixel's samples: points a fraction of a millimetre apart, 1.5 to 3 m away.
+      const Vec3d centre{(i % 20 - 9.5) * 40.0, (i / 20 - 7.0) * 40.0, -1500.0 - 5.0 * i};
+      ChiefRayHint hint;
+      for (int k = 0; k < 8; ++k) {
+        const Vec3d p = centre + Vec3d{0.1 * (k % 3), -0.07 * k, 0.2 * (k % 2)};
+        const bool had = hint.valid();
+        const ChiefRayImage plain = rays.ofPoint(p);
+        const ChiefRayImage started = rays.ofPoint(p, kWavelengthDNm, &hint);
+        ASSERT_EQ(started.status, plain.status) << name << " " << i << " " << k;
+        if (plain.status != ChiefRayStatus::Passes) continue;
+        hinted += had;
+        EXPECT_TRUE(hint.valid()) << name << " " << i << " " << k;
+        worst = std::max(worst, std::hypot(started.film.x - plain.film.x, started.film.y - plain.film.y));
+      }
+    }
+    EXPECT_GT(hinted, 1000) << name;
+    EXPECT_LT(worst, 1e-8) << name << ": mm on the film";  // 1e-8 mm: 2e-6 of a 5 um pixel
+    // Wrong starts: a crossing far off, a rate of the wrong sign or size.
+    const Vec3d p{310.0, -190.0, -2100.0};
+    const ChiefRayImage plain = rays.ofPoint(p);
+    for (const ChiefRayHint bad : {ChiefRayHint{-400.0f, 30.0f, 1.0f}, ChiefRayHint{-2090.0f, 0.0f, -3.0f},
+                                   ChiefRayHint{20.0f, 0.0f, 1e-6f}, ChiefRayHint{-30.0f, -5.0f, 1e6f}}) {
+      ChiefRayHint hint = bad;
+      const ChiefRayImage started = rays.ofPoint(p, kWavelengthDNm, &hint);
+      ASSERT_EQ(started.status, plain.status) << name;
+      EXPECT_NEAR(started.film.x, plain.film.x, 1e-8) << name << " " << bad.axisZ;
+      EXPECT_NEAR(started.film.y, plain.film.y, 1e-8) << name << " " << bad.axisZ;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lensrt

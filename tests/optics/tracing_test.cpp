@@ -256,3 +256,77 @@ TEST(Tracing, BatchedFilmTraceEqualsOneRayAtATimeForEveryLibraryLens) {
 
 }  // namespace
 }  // namespace lensrt
+
+namespace lensrt {
+namespace {
+
+bool sameBits(const Vec3d& a, const Vec3d& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// The chief-ray search traces to the stop by the lens with its rims opened
+// and goes on to the film from there (optics/chief_ray.cpp): those pieces
+// must be the whole trace's arithmetic, bit for bit, and the real rims must
+// be read off the paused trace's hits as the whole trace reads them.
+TEST(Tracing, APausedTraceResumesWithTheWholeTracesBits) {
+  int cutAfterTheStop = 0;
+  for (const char* name : {"dgauss-50mm", "wide-22mm", "fisheye-10mm", "canon-rf50-51mm"}) {
+    const LensSystem lens(test::libraryLens(name));
+    const LensSystem open = lens.withOpenRims();
+    const int stop = lens.paraxial().stopIndex;
+    const double front = lens.frontApertureRadius();
+    int passed = 0, cutBeforeTheStop = 0;
+    for (int i = 0; i < 4000; ++i) {
+      // Rays from 1 m toward the entrance pupil's plane, some past the front glass's rim.
+      const double u = (i % 63) / 62.0 - 0.5, v = (i / 63 % 63) / 62.0 - 0.5;
+      const Vec3d target{2.4 * front * u, 2.4 * front * v, lens.paraxial().entrancePupilZ};
+      const Vec3d origin{600.0 * v, -400.0 * u, -1000.0};
+      const LensRay ray{origin, target - origin};
+      const double wavelength = i % 3 == 0 ? 486.1 : kWavelengthDNm;  // dispersion too
+      std::vector<Vec3d> hits, path;
+      const auto paused = open.traceFromSceneTo(ray, stop, wavelength, &hits);
+      const auto whole = lens.traceFromScene(ray, wavelength, &path);
+      if (!paused) {
+        EXPECT_FALSE(whole) << name << " " << i;
+        continue;
+      }
+      ASSERT_EQ(hits.size(), std::size_t(stop) + 1);
+      const bool held = lens.rimsHold(hits);
+      const auto resumed = held ? lens.resumeFromScene(paused.value(), wavelength) : std::nullopt;
+      ASSERT_EQ(bool(resumed), bool(whole)) << name << " " << i;
+      if (whole) {
+        ++passed;
+        EXPECT_TRUE(sameBits(resumed->origin, whole->origin) &&
+                    sameBits(resumed->direction, whole->direction))
+            << name << " " << i;
+        for (std::size_t k = 0; k < hits.size(); ++k)
+          EXPECT_TRUE(sameBits(hits[k], path[k])) << name << " " << i;
+      } else {
+        ++(held ? cutAfterTheStop : cutBeforeTheStop);
+      }
+      // The open lens's own whole trace, resumed.
+      const auto openWhole = open.traceFromScene(ray, wavelength);
+      const auto openResumed = open.resumeFromScene(paused.value(), wavelength);
+      ASSERT_EQ(bool(openResumed), bool(openWhole)) << name << " " << i;
+      if (openWhole)
+        EXPECT_TRUE(sameBits(openResumed->origin, openWhole->origin) &&
+                    sameBits(openResumed->direction, openWhole->direction))
+            << name << " " << i;
+      // Paused inside the glass of the first element (dispersion's index carried over).
+      if (const auto inGlass = lens.traceFromSceneTo(ray, 0, wavelength)) {
+        const auto rest = lens.resumeFromScene(*inGlass, wavelength);
+        ASSERT_EQ(bool(rest), bool(whole)) << name << " " << i;
+        if (whole)
+          EXPECT_TRUE(sameBits(rest->origin, whole->origin) && sameBits(rest->direction, whole->direction))
+              << name << " " << i;
+      }
+    }
+    // Each case happens: the checks above saw rays pass and rims cut on both sides of the stop.
+    EXPECT_GT(passed, 10) << name;
+    EXPECT_GT(cutBeforeTheStop, 10) << name;
+  }
+  EXPECT_GT(cutAfterTheStop, 10);
+}
+
+}  // namespace
+}  // namespace lensrt

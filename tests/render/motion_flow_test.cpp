@@ -61,7 +61,8 @@ TEST(MotionFlow, ASamplesFlowIsThePinholesClosedForm) {
   // The camera moves +1 in y by the closing: the image moves down by f / z.
   flow.next.cameraFromWorld = Transform::translate({0, -1, 0});
   const Vec2f b{0.25f, 0.5f};
-  const SampleFlow f = sampleFlow(flow, scene, camera, 0, 0, b);
+  FlowHints hints;
+  const SampleFlow f = sampleFlow(flow, scene, camera, 0, 0, b, hints);
   ASSERT_TRUE(f.forward && f.backward);
   const double focal = 40 / std::tan(yfov / 2);  // pixels
   // x: 0.25 / 4 -> 2.5 / 5; y (up): 0.5 / 4 -> (1 - 1) / 5; raster y is down.
@@ -71,7 +72,7 @@ TEST(MotionFlow, ASamplesFlowIsThePinholesClosedForm) {
   EXPECT_EQ(f.backward->y, -f.forward->y);
   // Behind the camera at the closing: no flow in either direction.
   flow.next.cameraFromWorld = Transform::translate({0, 0, 10});
-  const SampleFlow behind = sampleFlow(flow, scene, camera, 0, 0, b);
+  const SampleFlow behind = sampleFlow(flow, scene, camera, 0, 0, b, hints);
   EXPECT_FALSE(behind.forward || behind.backward);
 }
 
@@ -80,13 +81,27 @@ TEST(MotionFlow, APixelWritesEachDirectionsMeanAndZeroWithoutSamples) {
   float out[4] = {1, 1, 1, 1};
   sums.write(out);
   for (float v : out) EXPECT_EQ(v, 0.0f);
-  sums.add({Vec2d{1, 2}, Vec2d{-1, -2}});
-  sums.add({Vec2d{3, 4}, std::nullopt});
+  sums.add({Vec2d{1, 2}, Vec2d{-1, -2}}, 0);
+  sums.add({Vec2d{3, 4}, std::nullopt}, 0);
   sums.write(out);
   EXPECT_EQ(out[0], 2.0f);
   EXPECT_EQ(out[1], 3.0f);
   EXPECT_EQ(out[2], -1.0f);  // one backward sample
   EXPECT_EQ(out[3], -2.0f);
+}
+
+TEST(MotionFlow, APixelTakesFourSamplesOfOneObjectAndEightOfSeveral) {
+  FlowSums one, two;
+  for (std::uint32_t i = 0; i < kFlowSamplesPerPixel; ++i) {
+    EXPECT_EQ(one.full(), i >= kFlowSamplesOneObject) << i;
+    if (!one.full()) one.add({Vec2d{1, 0}, std::nullopt}, 3);
+    EXPECT_FALSE(two.full()) << i;
+    two.add({Vec2d{1, 0}, std::nullopt}, i == 2 ? 5 : 3);
+  }
+  EXPECT_TRUE(one.full());
+  EXPECT_TRUE(two.full());
+  EXPECT_EQ(one.taken, kFlowSamplesOneObject);
+  EXPECT_EQ(two.taken, kFlowSamplesPerPixel);
 }
 
 }  // namespace
