@@ -7,7 +7,8 @@
 
 namespace lensrt {
 
-std::shared_ptr<const MotionFlow> RenderJob::motionFlow(const Camera& camera,
+std::shared_ptr<const MotionFlow> RenderJob::motionFlow(const Camera& camera, const CameraSpec& spec,
+                                                        const ShutterSpec& shutter,
                                                         const std::optional<ShutterTiming>& timing,
                                                         double frameSeconds) const {
   auto flow = std::make_shared<MotionFlow>();
@@ -38,6 +39,11 @@ std::shared_ptr<const MotionFlow> RenderJob::motionFlow(const Camera& camera,
           if (c.node == gltfCamera_.node) pose = c.worldFromCamera;
       m.cameraFromWorld = cameraFromWorld(pose);
       m.scene = std::move(posed);
+      // A keyed focus racks the film between frames (the image breathes);
+      // the f-number moves no chief ray, so it needs no camera of its own.
+      if (!spec.focusKeys.empty())
+        m.camera =
+            std::shared_ptr<const Camera>(makeCamera(spec, shutter, FlareSpec{}, seconds, quiet).camera);
       return m;
     };
     flow->now.cameraFromWorld = cameraFromWorld(opening);

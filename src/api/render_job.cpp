@@ -176,6 +176,12 @@ std::string RenderJob::environmentDescription() const {
 
 RenderJob::MadeCamera RenderJob::makeCamera(const CameraSpec& camera, const ShutterSpec& shutter,
                                             const FlareSpec& flare, Warnings& warnings) const {
+  return makeCamera(camera, shutter, flare, scene_->options().time.seconds, warnings);
+}
+
+RenderJob::MadeCamera RenderJob::makeCamera(const CameraSpec& camera, const ShutterSpec& shutter,
+                                            const FlareSpec& flare, double timeSeconds,
+                                            Warnings& warnings) const {
   const HitDistance hitDistance = [this](const Ray& ray) -> std::optional<double> {
     const std::optional<SurfaceHit> hit = scene_->geometry().intersect(ray);
     return hit ? std::optional<double>(hit->t) : std::nullopt;
@@ -184,7 +190,7 @@ RenderJob::MadeCamera RenderJob::makeCamera(const CameraSpec& camera, const Shut
     FilmGeometry raster;
     raster.width = width_;
     raster.height = height_;
-    const CameraRequest request{camera, shutter, flare, scene_->options().time.seconds};
+    const CameraRequest request{camera, shutter, flare, timeSeconds};
     MadeCamera made;
     made.camera = lensrt::makeCamera(request, gltfCamera_, raster, hitDistance, warnings, &made.flareLens);
     return made;

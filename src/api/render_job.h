@@ -77,6 +77,9 @@ class RenderJob {
   };
   MadeCamera makeCamera(const CameraSpec& camera, const ShutterSpec& shutter, const FlareSpec& flare,
                         Warnings& warnings) const;
+  // The same with keyframed settings read at another time (a neighbouring frame's).
+  MadeCamera makeCamera(const CameraSpec& camera, const ShutterSpec& shutter, const FlareSpec& flare,
+                        double timeSeconds, Warnings& warnings) const;
   // When the samples are taken (RenderSettings::timing): for a scene that
   // moves during the span it was loaded for, from the shutter; none when
   // nothing moves (a notice then when a rolling shutter or a shutter curve
@@ -86,8 +89,10 @@ class RenderJob {
   // job: the scene posed `frameSeconds` before and after its time (read
   // again from the file) when frameSeconds > 0, else the shutter's opening
   // and closing under `timing`. UsageError("--aov") when nothing moves over
-  // the shutter (api/flow_moments.cpp).
-  std::shared_ptr<const MotionFlow> motionFlow(const Camera& camera,
+  // the shutter (api/flow_moments.cpp). A keyframed focus moves the film
+  // between frames: the neighbours then get their own camera from `spec`.
+  std::shared_ptr<const MotionFlow> motionFlow(const Camera& camera, const CameraSpec& spec,
+                                               const ShutterSpec& shutter,
                                                const std::optional<ShutterTiming>& timing,
                                                double frameSeconds) const;
   // Whether the scene has glass whose index depends on the wavelength

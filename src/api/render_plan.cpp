@@ -105,7 +105,8 @@ RenderPlan::RenderPlan(const RenderSpec& spec, Warnings& warnings, const PlanOpt
   RenderJob::MadeCamera made = job_->makeCamera(spec_.camera, spec_.shutter, spec_.flare, warnings);
   base_.timing = job_->shutterTiming(spec_.shutter, warnings);
   if (spec_.aovs.flow)
-    base_.flow = job_->motionFlow(*made.camera, base_.timing, spec_.time.flowFrameSeconds());
+    base_.flow = job_->motionFlow(*made.camera, spec_.camera, spec_.shutter, base_.timing,
+                                  spec_.time.flowFrameSeconds());
   // The one place --spectral auto is resolved: the film below and every
   // shot's metadata follow this choice.
   transport_ = chooseTransport(spec_.colour.transport, wavelengthNeeds(spec_, *job_, made));

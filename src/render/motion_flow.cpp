@@ -62,12 +62,13 @@ SampleFlow sampleFlow(const MotionFlow& flow, const SceneDesc& rendered, const C
   const auto at = [&](const FlowMoment& m, ChiefRayHint& hint) -> std::optional<Vec2d> {
     const std::optional<Vec3d> there = cameraPointAt(m, rendered, instance, primitive, barycentric);
     if (!there) return std::nullopt;
-    // Still against the camera: the same image, so no motion, exactly (a
-    // solve from another start could differ in its last bits).
-    if (*there == *here) return now;
-    // The pixel's first sample at another moment starts where it did now.
+    // Still against the same camera: the same image, so no motion, exactly
+    // (a solve from another start could differ in its last bits).
+    if (*there == *here && !m.camera) return now;
+    // The pixel's first sample at another moment starts where it did now
+    // (the object-side chief ray does not depend on where the film is).
     if (!hint.valid()) hint = hints.now;
-    return imageOf(camera, *there, hint);
+    return imageOf(m.camera ? *m.camera : camera, *there, hint);
   };
   SampleFlow f;
   if (const std::optional<Vec2d> next = at(flow.next, hints.next)) f.forward = *next - *now;

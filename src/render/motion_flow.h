@@ -24,6 +24,9 @@ struct FlowMoment {
   // span, the shutter's closing) rather than its first (the opening).
   bool spanEnd = false;
   Transform cameraFromWorld;  // the camera's pose at that moment
+  // The camera at that moment when its projection differs from the
+  // rendered one's (a keyframed focus); none: the rendered camera.
+  std::shared_ptr<const Camera> camera;
 };
 
 // Forward: a point's image at `next` minus its image `now`. Backward: its

@@ -194,6 +194,30 @@ def test_through_dgauss_the_corners_move_as_lens_project_says(tmp_path):
     assert abs(expected[0][0] - centre) > 0.05
 
 
+def test_a_keyed_focus_breathes_the_flow_of_a_still_plane(cli, tmp_path):
+    # Racking the focus between frames moves a still point's image (the field of view
+    # breathes): each neighbouring frame projects through its own focus.
+    res, optics = (48, 32), dict(fstop=8, sensor="36x24")
+    scene = plane_scene(tmp_path / "still.gltf", plane_speed=0.0, size=20.0)
+    cli("render", scene, "--res", f"{res[0]}x{res[1]}", "--spp", 4, "--frames", "3:3", "--aov", "flow",
+        "--camera", "lens", "--lens", "dgauss-50mm", "--fstop", 8, "--sensor", "36x24", "--focus", "0:0.6,1:3",
+        "--env", "none", "-q", "-o", tmp_path / "k.####.exr")
+    c = lensrt.read(tmp_path / "k.0003.exr").channels
+    focus = lambda t: 0.6 + 2.4 * t  # metres, the keys' line
+    lens = lensrt.Lens("dgauss-50mm")
+    corners = np.array([[0.5, 0.5], [res[0] - 0.5, 0.5], [0.5, res[1] - 0.5], [res[0] - 0.5, res[1] - 0.5]])
+    rays = lens.unproject(corners, None, res=res, focus=focus(3 / FPS), **optics)
+    t = (-Z - rays.origins[:, 2]) / rays.directions[:, 2]
+    seen = rays.origins + t[:, None] * rays.directions
+    now = lens.project(seen, None, res=res, focus=focus(3 / FPS), **optics).pixels
+    for frame, direction in ((4, "forward"), (2, "backward")):
+        expected = lens.project(seen, None, res=res, focus=focus(frame / FPS), **optics).pixels - now
+        assert np.abs(expected).max() > 0.1  # the breathing shows at the corners
+        for (x, y), e in zip(corners.astype(int), expected):
+            got = [c[f"flow.{direction}.X"][y, x], c[f"flow.{direction}.Y"][y, x]]
+            np.testing.assert_allclose(got, e, atol=0.03, err_msg=direction)
+
+
 def test_warping_the_next_frame_back_by_the_forward_flow_gives_this_frame(cli, tmp_path):
     scene = lensrt.Scene(plane_scene(tmp_path / "plane.gltf"), time=1.0)
     common = dict(res=RES, spp=64, camera="pinhole", env="none", max_depth=0)
