@@ -236,12 +236,14 @@ std::string matrixText(const Transform::Matrix& m) {
 // the paraxial (distortion-free) projection, z is 1 / depth. The projection's
 // centre and scale come from the camera's own projection of points near the
 // axis at the focus distance (10 m for the pinhole or at infinity), so the
-// matrix is the pinhole that matches the lens at the image's centre. None for
-// moved films (the projection ignores them) or a projection that fails.
+// matrix is the pinhole that matches the lens at the image's centre; a
+// shifted film moves that centre. None for a tilted film (its image is no
+// longer a scaled copy of the scene's perspective about the axis: a
+// 4 x 4 matrix with w the depth cannot hold it) or a projection that fails.
 std::optional<std::string> worldToNdcText(const Camera& camera, const Transform::Matrix& cameraFromWorld) {
   const CameraInfo i = camera.info();
   const FilmGeometry& film = camera.film();
-  if (i.movements.any() || i.entrancePupilOffsetMm <= 0 || film.width <= 0 || film.height <= 0)
+  if (i.movements.tilted() || i.entrancePupilOffsetMm <= 0 || film.width <= 0 || film.height <= 0)
     return std::nullopt;
   const double depth = i.focusMetres > 0 && std::isfinite(i.focusMetres) ? i.focusMetres : 10.0;
   constexpr double kTan = 1e-3;

@@ -98,19 +98,26 @@ TEST(ExrStandardAttributes, NameTheLensAndTheSensor) {
 // the pupil; through the pinhole (35 mm) at 35 mm. A camera-space point
 // (x, y, -z) then images at v x / z, v y / z on the 36 x 24 mm film, so
 // its NDC is (0.5 + v x / (36 z), 0.5 - v y / (24 z)) (top left (0, 0)).
-// dof_row's camera stands at (0, 1.2, 0) looking down -Z. OpenImageIO's
-// iinfo reads both as numbers.
+// dof_row's camera stands at (0, 1.2, 0) looking down -Z. A film shifted by
+// (sx, sy) mm shows at its centre what the unshifted film showed at (sx, sy)
+// (x right, y up): its NDC is (0.5 + (v x / z - sx) / 36, 0.5 - (v y / z - sy)
+// / 24). OpenImageIO's iinfo reads both as numbers.
 TEST(ExrStandardAttributes, EntrancePupilOffsetAndWorldToNdcMatchTheClosedForm) {
   const TempDir dir;
   struct Case {
     std::vector<std::string> camera;
     double filmToPupilMm;
+    double shiftX = 0, shiftY = 0;
   };
   const double f = 50, d = 2000;
-  for (const Case& c : {Case{{"--camera", "pinhole", "--focal-length", "35"}, 35.0},
-                        Case{{"--camera", "thin", "--focal-length", "50", "--fstop", "8", "--focus", "2"},
-                             f * d / (d - f)}}) {
-    SCOPED_TRACE(c.camera[1]);
+  for (const Case& c :
+       {Case{{"--camera", "pinhole", "--focal-length", "35"}, 35.0},
+        Case{{"--camera", "thin", "--focal-length", "50", "--fstop", "8", "--focus", "2"}, f * d / (d - f)},
+        Case{{"--camera", "thin", "--focal-length", "50", "--fstop", "8", "--focus", "2", "--shift", "3,-2"},
+             f * d / (d - f),
+             3,
+             -2}}) {
+    SCOPED_TRACE(c.camera[1] + (c.shiftX != 0 ? " shifted" : ""));
     const std::string out = (dir / "a.exr").string();
     std::vector<std::string> args = {"render",   std::string(LENSRT_SOURCE_DIR) + "/scenes/dof_row.gltf",
                                      "--sensor", "36x24",
@@ -132,8 +139,8 @@ TEST(ExrStandardAttributes, EntrancePupilOffsetAndWorldToNdcMatchTheClosedForm) 
     for (const Imath::V3f world : {Imath::V3f(0.1f, 1.25f, -2.0f), Imath::V3f(-0.7f, 0.4f, -5.0f)}) {
       const Imath::V3f ndc = world * m;  // Imath divides by w
       const double x = world.x, y = world.y - 1.2, z = -world.z;
-      EXPECT_NEAR(ndc.x, 0.5 + v * x / (36 * z), 1e-5);
-      EXPECT_NEAR(ndc.y, 0.5 - v * y / (24 * z), 1e-5);
+      EXPECT_NEAR(ndc.x, 0.5 + (v * x / z - c.shiftX) / 36, 1e-5);
+      EXPECT_NEAR(ndc.y, 0.5 - (v * y / z - c.shiftY) / 24, 1e-5);
     }
     const cli::RunResult info = cli::runProgram("iinfo", {"-v", out});
     ASSERT_EQ(info.status, 0) << info.err;
