@@ -235,15 +235,14 @@ inline bool LensSystem::cross(Vec3d& o, Vec3d& d, double& transmittance, int fir
 }
 
 template <bool kFromFilm, bool kCoated>
-std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path,
-                                         int crossings) const {
+std::optional<LensRay> LensSystem::trace(const LensRay& ray, double wavelengthNm,
+                                         std::vector<Vec3d>* path) const {
   if (!validInput<kFromFilm>(ray)) return std::nullopt;
-  const int count = surfaceCount();
   Vec3d o = ray.origin;
   Vec3d d = normalize(ray.direction);
   double transmittance = ray.transmittance;
-  const int last = crossings < 0 ? count : std::min(crossings, count);
-  if (!cross<kFromFilm, kCoated>(o, d, transmittance, 0, last, wavelengthNm, path)) return std::nullopt;
+  if (!cross<kFromFilm, kCoated>(o, d, transmittance, 0, surfaceCount(), wavelengthNm, path))
+    return std::nullopt;
   return finished(o, d, transmittance);
 }
 
@@ -604,9 +603,13 @@ bool LensSystem::rimsHold(std::span<const Vec3d> hits) const {
 }
 
 std::optional<Vec3d> LensSystem::hitFromFilm(const LensRay& ray, int surface, double wavelengthNm) const {
-  if (surface < 0 || surface >= surfaceCount()) return std::nullopt;
-  const std::optional<LensRay> at = trace<true, false>(ray, wavelengthNm, nullptr, surfaceCount() - surface);
-  return at ? std::optional<Vec3d>(at->origin) : std::nullopt;
+  if (surface < 0 || surface >= surfaceCount() || !validInput<true>(ray)) return std::nullopt;
+  Vec3d o = ray.origin, d = normalize(ray.direction);
+  double transmittance = 1.0;
+  if (!cross<true, false>(o, d, transmittance, 0, surfaceCount() - surface, wavelengthNm, nullptr) ||
+      !isFinite(o) || !isFinite(d))
+    return std::nullopt;
+  return o;
 }
 
 }  // namespace lensrt

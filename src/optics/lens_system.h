@@ -237,10 +237,8 @@ class LensSystem {
   template <bool kFromFilm, bool kCoated>
   bool cross(Vec3d& o, Vec3d& d, double& transmittance, int first, int last, double wavelengthNm,
              std::vector<Vec3d>* path) const;
-  // crossings: how many surfaces to cross (from the ray's side); negative: all.
   template <bool kFromFilm, bool kCoated>
-  std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path,
-                               int crossings = -1) const;
+  std::optional<LensRay> trace(const LensRay& ray, double wavelengthNm, std::vector<Vec3d>* path) const;
 
   LensPrescription prescription_;
   ParaxialData paraxial_;
